@@ -1,0 +1,30 @@
+# Checks step-1's results.json from its default run (included by
+# run_program.cmake with RESULTS_JSON set): the "done when" of the foundation
+# issue. Every component's first frequency lies within 2 % of the converged
+# plane-stress value 166.436 Hz (toolchain.md, 324k DoFs), and every residual
+# is below 1e-8.
+string(JSON n_components LENGTH "${RESULTS_JSON}" components)
+if(n_components LESS 1)
+  message(FATAL_ERROR "results.json lists no components")
+endif()
+math(EXPR last "${n_components} - 1")
+foreach(c RANGE ${last})
+  string(JSON name GET "${RESULTS_JSON}" components ${c} name)
+  string(JSON f1 GET "${RESULTS_JSON}" components ${c} frequencies_hz 0)
+  if(f1 LESS 163.107 OR f1 GREATER 169.765)
+    message(FATAL_ERROR "${name}: f1 = ${f1} Hz is not within 2 % of 166.436 Hz")
+  endif()
+  string(JSON n_modes LENGTH "${RESULTS_JSON}" components ${c} residuals)
+  math(EXPR last_mode "${n_modes} - 1")
+  foreach(j RANGE ${last_mode})
+    string(JSON r GET "${RESULTS_JSON}" components ${c} residuals ${j})
+    if(NOT r LESS 1e-8)
+      message(FATAL_ERROR "${name}: residual of mode ${j} is ${r} >= 1e-8")
+    endif()
+  endforeach()
+  message(STATUS "${name}: f1 = ${f1} Hz, ${n_modes} residuals below 1e-8")
+endforeach()
+string(JSON n_levels LENGTH "${RESULTS_JSON}" convergence)
+if(n_levels LESS 3)
+  message(FATAL_ERROR "the convergence table has ${n_levels} rows")
+endif()

@@ -1,0 +1,75 @@
+# Runs a step program as a user would and checks what happened.
+#
+#   cmake -DPROGRAM=<exe> -DPRM=<step .prm> -DSCENE=<scene .prm>
+#         -DWORKDIR=<folder> -DOUTPUT=<output folder name>
+#         [-DEDIT_FILE=step|scene -DEDIT_FROM=<text> -DEDIT_TO=<text>]
+#         -DEXPECT=success|failure [-DMESSAGE=<regex>]
+#         [-DJSON_CHECKS=<check script>] -P run_program.cmake
+#
+# The step file and its scene are copied into WORKDIR (optionally with one
+# text replacement, to make a bad input out of a good one) and the program
+# runs there. For EXPECT=failure the program must exit non-zero, print a
+# message matching MESSAGE on stderr and leave no output folder. For
+# EXPECT=success it must exit 0 and write OUTPUT/results.json; JSON_CHECKS
+# then names a CMake script that inspects the variable RESULTS_JSON.
+
+file(REMOVE_RECURSE "${WORKDIR}")
+file(MAKE_DIRECTORY "${WORKDIR}")
+get_filename_component(prm_name "${PRM}" NAME)
+get_filename_component(scene_name "${SCENE}" NAME)
+file(READ "${PRM}" prm_text)
+file(READ "${SCENE}" scene_text)
+if(DEFINED EDIT_FILE)
+  if(EDIT_FILE STREQUAL "step")
+    set(edited "${prm_text}")
+  else()
+    set(edited "${scene_text}")
+  endif()
+  string(FIND "${edited}" "${EDIT_FROM}" position)
+  if(position EQUAL -1)
+    message(FATAL_ERROR "test setup: <${EDIT_FROM}> not found in the ${EDIT_FILE} file")
+  endif()
+  string(REPLACE "${EDIT_FROM}" "${EDIT_TO}" edited "${edited}")
+  if(EDIT_FILE STREQUAL "step")
+    set(prm_text "${edited}")
+  else()
+    set(scene_text "${edited}")
+  endif()
+endif()
+file(WRITE "${WORKDIR}/${prm_name}" "${prm_text}")
+file(WRITE "${WORKDIR}/${scene_name}" "${scene_text}")
+
+execute_process(COMMAND "${PROGRAM}" "${prm_name}"
+  WORKING_DIRECTORY "${WORKDIR}"
+  RESULT_VARIABLE status
+  OUTPUT_VARIABLE out
+  ERROR_VARIABLE err)
+
+if(EXPECT STREQUAL "failure")
+  if(status EQUAL 0)
+    message(FATAL_ERROR "expected a non-zero exit status, got 0.\n${out}\n${err}")
+  endif()
+  if(NOT err MATCHES "${MESSAGE}")
+    message(FATAL_ERROR "stderr does not match <${MESSAGE}>:\n${err}")
+  endif()
+  if(EXISTS "${WORKDIR}/${OUTPUT}")
+    message(FATAL_ERROR "bad input must not write output, but ${OUTPUT}/ exists")
+  endif()
+  message(STATUS "refused as expected (status ${status}): ${err}")
+else()
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "exit status ${status}\n${out}\n${err}")
+  endif()
+  if(NOT EXISTS "${WORKDIR}/${OUTPUT}/results.json")
+    message(FATAL_ERROR "no ${OUTPUT}/results.json was written")
+  endif()
+  file(READ "${WORKDIR}/${OUTPUT}/results.json" RESULTS_JSON)
+  file(GLOB leftovers "${WORKDIR}/${OUTPUT}/*.tmp-*")
+  if(leftovers)
+    message(FATAL_ERROR "temporary files left behind: ${leftovers}")
+  endif()
+  if(DEFINED JSON_CHECKS)
+    include("${JSON_CHECKS}")
+  endif()
+  message(STATUS "${out}")
+endif()
