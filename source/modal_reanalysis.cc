@@ -178,6 +178,42 @@ namespace FuzzyContact
 
 
   // ---------------------------------------------------------------------
+  // ResidualCheck
+  // ---------------------------------------------------------------------
+
+  ResidualCheck::ResidualCheck(const ParameterModel &model)
+      : model(model)
+  {
+    K0_inverse.initialize(model.nominal_stiffness());
+  }
+
+
+  ResidualCheck::Residuals
+  ResidualCheck::check(const std::vector<double>         &t,
+                       const std::vector<double>         &eigenvalues,
+                       const std::vector<Vector<double>> &modes) const
+  {
+    AssertDimension(eigenvalues.size(), modes.size());
+    SparseMatrix<double> K, M;
+    model.matrices(t, K, M);
+    Residuals      result;
+    Vector<double> Kx(K.m()), r(K.m()), z(K.m());
+    for (unsigned int j = 0; j < modes.size(); ++j)
+    {
+      K.vmult(Kx, modes[j]);
+      M.vmult(r, modes[j]);
+      r.sadd(-eigenvalues[j], 1., Kx);
+      z = r;
+      K0_inverse.solve(z);
+      const double energy_norm = std::sqrt(std::max(modes[j] * Kx, 0.));
+      result.relative.push_back(r.l2_norm() / Kx.l2_norm());
+      result.energy.push_back(std::sqrt(std::max(r * z, 0.)) / energy_norm);
+    }
+    return result;
+  }
+
+
+  // ---------------------------------------------------------------------
   // ExactResolve
   // ---------------------------------------------------------------------
 
@@ -394,7 +430,6 @@ namespace FuzzyContact
     const unsigned int          n       = K.m();
     ReducedBasis                T(M, truncation_tolerance);
     std::vector<Vector<double>> r(n_modes, Vector<double>(n));
-    std::vector<double>         reference(n_modes);
     Vector<double>              tmp(n);
     // r_1 = K0^{-1} M(t) phi0 for every mode, then the series terms, added
     // term by term so that lower terms come first.
@@ -402,8 +437,7 @@ namespace FuzzyContact
     {
       M.vmult(r[j], nominal.modes[j]);
       K0_inverse.solve(r[j]);
-      reference[j] = std::sqrt(M.matrix_norm_square(r[j]));
-      T.add(r[j], reference[j]);
+      T.add(r[j], 0.);
     }
     for (unsigned int i = 2; i <= order + 1; ++i)
       for (unsigned int j = 0; j < n_modes; ++j)
@@ -414,7 +448,7 @@ namespace FuzzyContact
         tmp *= -1.;
         K0_inverse.solve(tmp);
         r[j] = tmp;
-        T.add(r[j], reference[j]);
+        T.add(r[j], 0.);
       }
     ReanalysisResult result = rayleigh_ritz(K, M, T, n_modes);
     result.order            = order;

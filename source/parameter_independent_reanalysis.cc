@@ -44,6 +44,7 @@ namespace FuzzyContact
                    : std::unique_ptr<TimerOutput::Scope>();
     };
 
+    residual_check_.reset();
     model_     = std::make_unique<ParameterModel>(component, parameter_names);
     nominal_   = nominal;
     clusters_  = reanalysis_clusters(nominal_, cluster_gap);
@@ -315,13 +316,13 @@ namespace FuzzyContact
   }
 
 
-  std::vector<double>
+  ResidualCheck::Residuals
   ParameterIndependentReanalysis::residuals(const std::vector<double> &t,
                                             const ReanalysedModes &modes) const
   {
-    SparseMatrix<double> K, M;
-    model().matrices(t, K, M);
-    return relative_residuals(K, M, modes.eigenvalues, this->modes(modes));
+    if (!residual_check_)
+      residual_check_ = std::make_unique<ResidualCheck>(model());
+    return residual_check_->check(t, modes.eigenvalues, this->modes(modes));
   }
 
 

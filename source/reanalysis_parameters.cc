@@ -80,6 +80,20 @@ namespace FuzzyContact
   }
 
 
+  void
+  check_distinct(const std::vector<ReanalysisParameter> &parameters)
+  {
+    for (unsigned int k = 0; k < parameters.size(); ++k)
+      for (unsigned int l = 0; l < k; ++l)
+        AssertThrow(parameters[k].property != parameters[l].property ||
+                      parameters[k].zones != parameters[l].zones,
+                    ExcMessage("reanalysis parameters <" + parameters[l].name +
+                               "> and <" + parameters[k].name +
+                               "> change the same property of the same "
+                               "zones; declare only one of them."));
+  }
+
+
   std::pair<std::vector<double>, std::vector<double>>
   perturbed_zone_materials(const ComponentDescription             &component,
                            const std::vector<ReanalysisParameter> &parameters,
@@ -156,14 +170,7 @@ namespace FuzzyContact
     for (const std::string &name : parameter_names)
       parameters_.push_back(ReanalysisParameter::parse(name, description));
 
-    for (unsigned int k = 0; k < parameters_.size(); ++k)
-      for (unsigned int l = 0; l < k; ++l)
-        AssertThrow(parameters_[k].property != parameters_[l].property ||
-                      parameters_[k].zones != parameters_[l].zones,
-                    ExcMessage("reanalysis parameters <" + parameters_[l].name +
-                               "> and <" + parameters_[k].name +
-                               "> change the same property of the same "
-                               "zones; declare only one of them."));
+    check_distinct(parameters_);
 
     K0_.reinit(component.sparsity_pattern());
     M0_.reinit(component.sparsity_pattern());

@@ -158,10 +158,11 @@ namespace FuzzyContact
     std::vector<Vector<double>>
     modes(const ReanalysedModes &modes) const;
     /**
-     * Relative residuals ||K(t) phi - lambda M(t) phi|| / ||K(t) phi|| of the
-     * reanalysed pairs on the full matrices (cost of a few sparse products).
+     * Residuals of the reanalysed pairs on the full matrices (see
+     * ResidualCheck: Euclidean and energy-norm). Costs a few sparse
+     * products and one back-solve per mode; the first call factorises K0.
      */
-    std::vector<double>
+    ResidualCheck::Residuals
     residuals(const std::vector<double> &t, const ReanalysedModes &modes) const;
 
     // ReanalysisMethod
@@ -186,7 +187,9 @@ namespace FuzzyContact
     std::vector<unsigned int>              basis_sizes_;
     std::vector<FullMatrix<double>>        zone_K_, zone_M_;
     unsigned int                           max_order_ = 0;
-    unsigned int                           order_     = 0;
+    // Built on the first call of residuals() (not needed online).
+    mutable std::unique_ptr<ResidualCheck> residual_check_;
+    unsigned int                           order_ = 0;
   };
 } // namespace FuzzyContact
 

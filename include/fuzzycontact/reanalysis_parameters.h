@@ -70,6 +70,13 @@ namespace FuzzyContact
   };
 
   /**
+   * Throws if two of @p parameters change the same property of the same
+   * zones (their derivative matrices would be identical), naming them.
+   */
+  void
+  check_distinct(const std::vector<ReanalysisParameter> &parameters);
+
+  /**
    * The zone moduli and densities of @p component after the relative changes
    * @p t of @p parameters, starting from @p nominal_moduli and
    * @p nominal_densities (one per zone). Throws a message naming the
