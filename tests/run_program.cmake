@@ -4,7 +4,8 @@
 #         -DWORKDIR=<folder> -DOUTPUT=<output folder name>
 #         [-DEDIT_FILE=step|scene -DEDIT_FROM=<text> -DEDIT_TO=<text>]
 #         -DEXPECT=success|failure [-DMESSAGE=<regex>]
-#         [-DJSON_CHECKS=<check script>] -P run_program.cmake
+#         [-DJSON_CHECKS=<check script>] [-DEXTRA_FILES=<file>,<file>...]
+#         -P run_program.cmake
 #
 # The step file and its scene are copied into WORKDIR (optionally with one
 # text replacement, to make a bad input out of a good one) and the program
@@ -12,6 +13,8 @@
 # message matching MESSAGE on stderr and leave no output folder. For
 # EXPECT=success it must exit 0 and write OUTPUT/results.json; JSON_CHECKS
 # then names a CMake script that inspects the variable RESULTS_JSON.
+# EXTRA_FILES (comma-separated) are copied into WORKDIR unchanged, for step
+# files that name more than one scene.
 
 file(REMOVE_RECURSE "${WORKDIR}")
 file(MAKE_DIRECTORY "${WORKDIR}")
@@ -38,6 +41,12 @@ if(DEFINED EDIT_FILE)
 endif()
 file(WRITE "${WORKDIR}/${prm_name}" "${prm_text}")
 file(WRITE "${WORKDIR}/${scene_name}" "${scene_text}")
+if(DEFINED EXTRA_FILES)
+  string(REPLACE "," ";" extra_files "${EXTRA_FILES}")
+  foreach(extra ${extra_files})
+    file(COPY "${extra}" DESTINATION "${WORKDIR}")
+  endforeach()
+endif()
 
 execute_process(COMMAND "${PROGRAM}" "${prm_name}"
   WORKING_DIRECTORY "${WORKDIR}"
