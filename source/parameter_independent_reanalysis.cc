@@ -197,18 +197,37 @@ namespace FuzzyContact
   ReanalysedModes
   ParameterIndependentReanalysis::online_to_tolerance(
     const std::vector<double> &t,
-    const double               tolerance) const
+    const double               tolerance,
+    const bool                 check_residuals) const
   {
-    ReanalysedModes current = online(t, 1);
-    for (unsigned int n = 1; n < max_order_; ++n)
+    const auto residual_estimate = [&](const ReanalysedModes &r)
     {
-      ReanalysedModes next    = online(t, n + 1);
-      current.estimated_error = relative_frequency_change(current, next);
-      if (current.estimated_error <= tolerance)
+      const ResidualCheck::Residuals res = residuals(t, r);
+      const double                   eta =
+        *std::max_element(res.energy.begin(), res.energy.end());
+      return 0.5 * eta * eta;
+    };
+    ReanalysedModes current = online(t, 1);
+    for (unsigned int n = 1; n <= max_order_; ++n)
+    {
+      ReanalysedModes next;
+      double          estimate = -1;
+      if (n < max_order_)
+      {
+        next     = online(t, n + 1);
+        estimate = relative_frequency_change(current, next);
+      }
+      if (check_residuals)
+        estimate = std::max(estimate, residual_estimate(current));
+      if (estimate >= 0)
+        current.estimated_error = estimate;
+      if (estimate >= 0 && estimate <= tolerance)
       {
         current.tolerance_met = true;
         return current;
       }
+      if (n == max_order_)
+        break;
       current = std::move(next);
     }
     current.tolerance_met = false;
@@ -219,11 +238,14 @@ namespace FuzzyContact
   unsigned int
   ParameterIndependentReanalysis::select_order(
     const std::vector<std::vector<double>> &samples,
-    const double                            tolerance)
+    const double                            tolerance,
+    const bool                              check_residuals)
   {
     unsigned int chosen = 1;
     for (const auto &t : samples)
-      chosen = std::max(chosen, online_to_tolerance(t, tolerance).order);
+      chosen =
+        std::max(chosen,
+                 online_to_tolerance(t, tolerance, check_residuals).order);
     order_ = chosen;
     return chosen;
   }

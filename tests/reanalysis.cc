@@ -773,6 +773,17 @@ TEST(ParameterIndependentReanalysis, RitzValuesDecreaseWithTheOrder)
   EXPECT_GE(actual + 1e-9, chosen.estimated_error);
   EXPECT_EQ(pi.select_order({t, {0.05, 0, 0}}, 1e-6), chosen.order);
   EXPECT_EQ(pi.order(), chosen.order);
+
+  // With the residual check, the estimate also holds eta^2 / 2; a
+  // tolerance below the round-off floor is met by no order, and says so.
+  const ReanalysedModes checked = pi.online_to_tolerance(t, 1e-6, true);
+  EXPECT_TRUE(checked.tolerance_met);
+  EXPECT_GE(checked.estimated_error, chosen.estimated_error);
+  EXPECT_LE(actual, 1e-6);
+  const ReanalysedModes impossible = pi.online_to_tolerance(t, 1e-13, true);
+  EXPECT_FALSE(impossible.tolerance_met);
+  EXPECT_EQ(impossible.order, 3u);
+  EXPECT_GT(impossible.estimated_error, 1e-13);
 }
 
 // The a-posteriori check on the full matrices: the energy-norm residual eta

@@ -64,8 +64,10 @@ namespace FuzzyContact
     /** basis_size x n_modes: mode j is T Y(:, j), M(t)-normalised. */
     FullMatrix<double> Y;
     /**
-     * max_j |f_j(order) - f_j(order + 1)| / f_j(order + 1) when the order
-     * was chosen to a tolerance; NaN where no higher order was available.
+     * When the order was chosen to a tolerance: the estimated relative
+     * frequency error, max_j |f_j(order) - f_j(order + 1)| / f_j(order + 1)
+     * (and eta^2 / 2 if residuals were checked); NaN if no estimate was
+     * available (highest order without residual check).
      */
     double estimated_error = std::numeric_limits<double>::quiet_NaN();
     /** Whether estimated_error met the tolerance asked for. */
@@ -106,21 +108,27 @@ namespace FuzzyContact
     ReanalysedModes
     online(const std::vector<double> &t, const unsigned int order) const;
     /**
-     * The lowest order whose estimated error meets @p tolerance (or
-     * max_order(), with tolerance_met = false).
+     * The lowest order whose estimated relative frequency error meets
+     * @p tolerance (or max_order(), with tolerance_met = false). The
+     * estimate of order n is its change to order n + 1 (mesh-independent
+     * cost); with @p check_residuals also eta^2 / 2, eta the largest
+     * energy-norm residual on the full matrices (see ResidualCheck), which
+     * costs O(n_dofs) per order but also covers the highest order.
      */
     ReanalysedModes
     online_to_tolerance(const std::vector<double> &t,
-                        const double               tolerance) const;
+                        const double               tolerance,
+                        const bool check_residuals = false) const;
 
     /**
      * Sets order() to the lowest order that meets @p tolerance at every
-     * sample (for instance the corners of a parameter box) and returns it;
-     * max_order() if none does.
+     * sample (for instance the corners of a parameter box; see
+     * online_to_tolerance()) and returns it; max_order() if none does.
      */
     unsigned int
     select_order(const std::vector<std::vector<double>> &samples,
-                 const double                            tolerance);
+                 const double                            tolerance,
+                 const bool check_residuals = false);
     unsigned int
     order() const;
     void

@@ -548,7 +548,9 @@ namespace Step2
         double time_online;
         double time_offline;
         double estimate = std::numeric_limits<double>::quiet_NaN();
+        double change   = std::numeric_limits<double>::quiet_NaN();
         bool   selected = false;
+        bool   not_met  = false;
       };
       std::vector<Row> rows;
       {
@@ -596,24 +598,45 @@ namespace Step2
             }
             own.push_back(std::move(row));
           }
-          // The order a tolerance asks for: the lowest whose change to the
-          // next order (an estimate of its error) meets the tolerance.
+          // The order a tolerance asks for. Two a-posteriori estimates of
+          // the relative frequency error of order n: the change to order
+          // n + 1 (Ritz values on nested bases decrease towards the exact
+          // ones, so this is a lower estimate), and, with the residual
+          // check, eta^2 / 2 from the energy-norm residual eta (which also
+          // sees a method that stagnates, and covers the highest order).
+          // The order is the lowest whose estimates meet the tolerance.
           if (method.has_order())
           {
-            unsigned int chosen = own.size() - 1;
-            for (unsigned int i = 0; i + 1 < own.size(); ++i)
+            unsigned int chosen = own.size();
+            for (unsigned int i = 0; i < own.size(); ++i)
             {
-              double change = 0;
-              for (unsigned int j = 0; j < n_modes; ++j)
+              double estimate = -1;
+              if (i + 1 < own.size())
               {
-                const double a = std::sqrt(own[i].result.eigenvalues[j]);
-                const double b = std::sqrt(own[i + 1].result.eigenvalues[j]);
-                change         = std::max(change, std::abs(a - b) / b);
+                double change = 0;
+                for (unsigned int j = 0; j < n_modes; ++j)
+                {
+                  const double a = std::sqrt(own[i].result.eigenvalues[j]);
+                  const double b = std::sqrt(own[i + 1].result.eigenvalues[j]);
+                  change         = std::max(change, std::abs(a - b) / b);
+                }
+                own[i].change = change;
+                estimate      = change;
               }
-              own[i].estimate = change;
-              if (change <= settings.order_tolerance &&
-                  chosen + 1 == own.size())
+              if (std::isfinite(own[i].energy_residual))
+                estimate = std::max(estimate,
+                                    0.5 * own[i].energy_residual *
+                                      own[i].energy_residual);
+              if (estimate >= 0)
+                own[i].estimate = estimate;
+              if (estimate >= 0 && estimate <= settings.order_tolerance &&
+                  chosen == own.size())
                 chosen = i;
+            }
+            if (chosen == own.size())
+            {
+              chosen              = own.size() - 1;
+              own[chosen].not_met = true;
             }
             own[chosen].selected = true;
           }
@@ -660,8 +683,11 @@ namespace Step2
               << scientific(row.time_online, 2) << std::setw(10)
               << fixed(time_exact / row.time_online, 0) << "x"
               << (row.selected && row.method != "taylor"
-                    ? "  <- order for tolerance " +
-                        scientific(settings.order_tolerance, 0)
+                    ? (row.not_met ? "  <- tolerance " +
+                                       scientific(settings.order_tolerance, 0) +
+                                       " not met by any order"
+                                   : "  <- order for tolerance " +
+                                       scientific(settings.order_tolerance, 0))
                     : "")
               << "\n";
         bool reordered = false;
@@ -702,6 +728,10 @@ namespace Step2
         }
         if (std::isfinite(row.estimate))
           entry["estimated_error"] = row.estimate;
+        if (std::isfinite(row.change))
+          entry["change_to_next_order"] = row.change;
+        if (row.selected && row.method != "taylor")
+          entry["tolerance_met"] = !row.not_met;
         entry["time_online_s"]  = row.time_online;
         entry["time_offline_s"] = row.time_offline;
         entry["time_exact_s"]   = time_exact;
