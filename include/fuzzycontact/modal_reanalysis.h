@@ -17,6 +17,9 @@
 // The parameter-independent HPTP, whose online cost does not depend on the
 // mesh, is in parameter_independent_reanalysis.h.
 //
+// The methods keep references to the ParameterModel and the nominal
+// ModalBasis they are built with: both must outlive them.
+//
 // Close eigenvalues: the nominal modes are grouped into clusters whose
 // eigenvalues lie within a relative "cluster gap" of each other, and each
 // cluster is expanded as a subspace (eigen_derivatives.h). Every method
