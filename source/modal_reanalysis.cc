@@ -26,7 +26,7 @@ namespace FuzzyContact
                       "relative frequency error max_j |f_j(n) - f_j(n+1)| / "
                       "f_j(n+1) is at most this.");
     prm.declare_entry("truncation tolerance",
-                      "1e-10",
+                      "1e-6",
                       Patterns::Double(),
                       "A basis vector is dropped when its M-norm after "
                       "orthogonalisation is below this times max(its norm "

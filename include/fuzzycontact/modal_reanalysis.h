@@ -59,8 +59,13 @@ namespace FuzzyContact
      * max_j |f_j^(n) - f_j^(n+1)| / f_j^(n+1), is at most this.
      */
     double order_tolerance = 1e-6;
-    /** Rank truncation of the basis (see reduced_basis.h). */
-    double truncation_tolerance = 1e-10;
+    /**
+     * Rank truncation of the basis (see reduced_basis.h): a dropped
+     * direction of relative size delta changes Ritz values by O(delta^2),
+     * so 1e-6 costs at most ~1e-12, below the round-off floor, while
+     * smaller values admit round-off directions that grow with the mesh.
+     */
+    double truncation_tolerance = 1e-6;
     /**
      * Nominal modes whose eigenvalues differ by at most this relative gap
      * are expanded together as a cluster.
@@ -257,7 +262,9 @@ namespace FuzzyContact
 
   /**
    * Kirsch's Combined Approximations. At order n the basis holds n + 1
-   * terms r_1..r_{n+1} per mode (as many vectors as HPTP of order n).
+   * terms r_1..r_{n+1} per mode (as many vectors as HPTP of order n); each
+   * term is truncated relative to its own norm (the terms of the series
+   * shrink geometrically).
    */
   class CombinedApproximations : public ReanalysisMethod
   {
