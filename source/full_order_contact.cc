@@ -105,8 +105,8 @@ namespace FuzzyContact
         F.scale = scale;
         continue;
       }
-      F.inverse = std::make_unique<SparseDirectUMFPACK>();
-      F.inverse->initialize(components[c]->stiffness_matrix());
+      F.inverse = std::make_unique<SparseDirectSolver>();
+      F.inverse->factorize(components[c]->stiffness_matrix());
       ++factorizations;
       F.moduli        = moduli;
       F.scale         = 1;

@@ -10,8 +10,8 @@
 //     g = g0 + sum_c C_c u_c,          Signorini + Coulomb on (g, p).
 //
 // It is solved by block elimination: every K_c is factorised once by
-// UMFPACK (sparse LU), and the primal-dual active set method
-// (ActiveSetSolver) works on the Schur complement W = sum_c C_c K_c^{-1}
+// UMFPACK (sparse LU, SparseDirectSolver), and the primal-dual active set
+// method (ActiveSetSolver) works on the Schur complement W = sum_c C_c K_c^{-1}
 // C_c^T, whose columns are computed only when the active set first needs
 // them (one back-substitution per component touched) and kept. The
 // displacements then follow from one more back-substitution per component,
@@ -41,9 +41,9 @@
 #include <fuzzycontact/component.h>
 #include <fuzzycontact/contact_interface.h>
 #include <fuzzycontact/contact_problem.h>
+#include <fuzzycontact/sparse_direct_solver.h>
 
 #include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/vector.h>
 
 #include <memory>
@@ -132,7 +132,7 @@ namespace FuzzyContact
     // columns C_c K_ref^{-1} C_c^T e_j computed so far.
     struct Factorized
     {
-      std::unique_ptr<SparseDirectUMFPACK>         inverse;
+      std::unique_ptr<SparseDirectSolver>          inverse;
       std::vector<double>                          moduli;
       double                                       scale = 1;
       Vector<double>                               free_solution;
