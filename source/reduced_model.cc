@@ -1,7 +1,7 @@
 #include <fuzzycontact/reduced_model.h>
+#include <fuzzycontact/sparse_direct_solver.h>
 
 #include <deal.II/base/exceptions.h>
-#include <deal.II/lac/sparse_direct.h>
 
 #include <algorithm>
 #include <cmath>
@@ -90,8 +90,8 @@ namespace FuzzyContact
                              ": the static correction has neither contact "
                              "DoFs nor loads to attach modes to."));
 
-      SparseDirectUMFPACK inverse;
-      inverse.initialize(K);
+      SparseDirectSolver inverse;
+      inverse.factorize(K);
       psi_raw.assign(n_e, Vector<double>(component.n_dofs()));
       for (unsigned int e = 0; e < n_e; ++e)
       {
@@ -425,6 +425,19 @@ namespace FuzzyContact
       Vector<double> q = r.load;
       factor.solve(q);
       r.gap_operator.vmult_add(problem_.g_load, q);
+
+      // Recovery of the observed displacements without a reduced solve:
+      // u_obs = lambda O K_r^{-1} f_r + (O K_r^{-1} C_r^T) p.
+      const unsigned int n_obs = r.observed_dofs.size();
+      FullMatrix<double> OY(n_obs, m);
+      Vector<double>     Oq(n_obs);
+      if (n_obs > 0)
+      {
+        r.observation.mmult(OY, Yf);
+        r.observation.vmult(Oq, q);
+      }
+      observation_flexibility.push_back(std::move(OY));
+      observation_load.push_back(std::move(Oq));
       factors.push_back(std::move(factor_pointer));
     }
     problem_.check();
@@ -490,7 +503,6 @@ namespace FuzzyContact
     s.compute_totals();
     if (report != nullptr)
     {
-      const std::vector<Vector<double>> q = coordinates(state.p, load_factor);
       const auto displacement = [&](const FaceNode &node, const unsigned d)
       {
         const ReducedComponentMatrices &r  = components[node.component];
@@ -500,10 +512,12 @@ namespace FuzzyContact
         AssertThrow(it != r.observed_dofs.end(),
                     ExcMessage("ReducedContactModel: a report DoF is not "
                                "among the observed DoFs."));
-        const unsigned int row = it - r.observed_dofs.begin();
-        double             u   = 0;
-        for (unsigned int j = 0; j < r.observation.n(); ++j)
-          u += r.observation(row, j) * q[node.component][j];
+        const unsigned int        row = it - r.observed_dofs.begin();
+        const FullMatrix<double> &OY  = observation_flexibility[node.component];
+        double u = load_factor * observation_load[node.component][row];
+        for (unsigned int j = 0; j < state.p.size(); ++j)
+          if (state.p[j] != 0)
+            u += OY(row, j) * state.p[j];
         return u;
       };
       for (unsigned int d = 0; d < 2; ++d)

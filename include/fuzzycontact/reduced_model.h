@@ -185,7 +185,9 @@ namespace FuzzyContact
     /**
      * The solution of a solver in reduced coordinates: forces, gaps
      * (g_free + W p), statuses, totals and the displacements of @p report
-     * (whose DoFs must be among the observed ones).
+     * (whose DoFs must be among the observed ones), recovered as
+     * lambda O K_r^{-1} f_r + (O K_r^{-1} C_r^T) p with matrices formed when
+     * the model is built (no reduced solve).
      */
     ContactSolution
     solution(const ContactState &state,
@@ -197,7 +199,11 @@ namespace FuzzyContact
     std::vector<ReducedComponentMatrices>                  components;
     std::vector<std::unique_ptr<LAPACKFullMatrix<double>>> factors;
     std::vector<FullMatrix<double>>                        flexibilities;
-    ContactProblem                                         problem_;
+    // O_c K_r,c^{-1} C_r,c^T and O_c K_r,c^{-1} f_r,c: observed
+    // displacements straight from the forces.
+    std::vector<FullMatrix<double>> observation_flexibility;
+    std::vector<Vector<double>>     observation_load;
+    ContactProblem                  problem_;
   };
 } // namespace FuzzyContact
 
