@@ -328,12 +328,18 @@ namespace FuzzyContact
             (total > 0 && -c_n(deepest) * gn[deepest] <= tol * total))
           break;
         ++iterations;
-        AssertThrow(iterations <= parameters_.max_iterations,
-                    ExcMessage(what +
-                               ": the normal contact start did not finish "
-                               "in max_iterations = " +
-                               std::to_string(parameters_.max_iterations) +
-                               " iterations."));
+        if (iterations > parameters_.max_iterations)
+        {
+          std::ostringstream message;
+          message << what
+                  << ": the frictionless start (Lawson-Hanson) did not "
+                     "finish in max_iterations = "
+                  << parameters_.max_iterations << " iterations (load step "
+                  << step.step << "); the deepest open node still "
+                     "penetrates by "
+                  << -gn[deepest] << " m.";
+          AssertThrow(false, ExcMessage(message.str()));
+        }
         closed[deepest]               = true;
         const Vector<double> p_before = p;
 
@@ -542,7 +548,7 @@ namespace FuzzyContact
     }
 
     std::ostringstream message;
-    message << what << ": the active set method did not converge in "
+    message << what << ": the active set method did not converge in max_iterations = "
             << parameters_.max_iterations << " iterations (load step "
             << step.step << "); complementarity residual " << residual << " > "
             << tol << ".";
