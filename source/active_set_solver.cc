@@ -335,7 +335,8 @@ namespace FuzzyContact
                   << ": the frictionless start (Lawson-Hanson) did not "
                      "finish in max_iterations = "
                   << parameters_.max_iterations << " iterations (load step "
-                  << step.step << "); the deepest open node still "
+                  << step.step
+                  << "); the deepest open node still "
                      "penetrates by "
                   << -gn[deepest] << " m.";
           AssertThrow(false, ExcMessage(message.str()));
@@ -548,7 +549,8 @@ namespace FuzzyContact
     }
 
     std::ostringstream message;
-    message << what << ": the active set method did not converge in max_iterations = "
+    message << what
+            << ": the active set method did not converge in max_iterations = "
             << parameters_.max_iterations << " iterations (load step "
             << step.step << "); complementarity residual " << residual << " > "
             << tol << ".";
