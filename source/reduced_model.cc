@@ -403,6 +403,7 @@ namespace FuzzyContact
       auto factor_pointer = std::make_unique<LAPACKFullMatrix<double>>(k, k);
       LAPACKFullMatrix<double> &factor = *factor_pointer;
       factor                           = r.stiffness;
+      factor.set_property(LAPACKSupport::symmetric);
       factor.compute_cholesky_factorization();
 
       // Y = K_r^{-1} C_r^T, W_c = C_r Y, g_load += C_r K_r^{-1} f_r.
