@@ -109,7 +109,9 @@ namespace FuzzyContact
       , shape({{1., 2., 3.}}, {{1., 2., 3.}}, "FL2C")
   {
     parameters_.check();
-    shape_gain = largest_secant_gain(shape);
+    // The secant gain of the shape at its saturation point a3 (= 1: R(x) =
+    // -x on [a1 / 2, a3]).
+    shape_gain = std::abs(shape(3.) / 3.);
   }
 
   const FL2CParameters &
