@@ -555,9 +555,10 @@ namespace Step3
           theory << "Euler-Bernoulli with contact at P1's tip only: N = F "
                     "L^3 / (L^3 + a^3) = "
                  << std::fixed << std::setprecision(0)
-                 << F * L * L * L / (L * L * L + a * a * a) << " N (a = " << a
-                 << " m); full_order F_n = " << c.runs[0].solution.normal_force
-                 << " N";
+                 << F * L * L * L / (L * L * L + a * a * a)
+                 << " N (L = " << std::setprecision(3) << L << " m, a = " << a
+                 << " m); full_order F_n = " << std::setprecision(0)
+                 << c.runs[0].solution.normal_force << " N";
         }
       }
       c.beam_theory = theory.str();
