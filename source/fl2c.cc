@@ -110,7 +110,7 @@ namespace FuzzyContact
   {
     parameters_.check();
     // The secant gain of the shape at its saturation point a3 (= 1: R(x) =
-    // -x on [a1 / 2, a3]).
+    // -x at the half steps from a1/2 to a3).
     shape_gain = std::abs(shape(3.) / 3.);
   }
 

@@ -623,8 +623,22 @@ TEST(MamdaniRegulator, CentroidsMatchHandComputedValues)
                         0.5 * (0.275 * 0.275 - 4) / 2 +
                         0.225 / 6 * 0.5 * (2 * -0.275 - 0.05);
   EXPECT_NEAR(paper(7.5), moment / area, 1e-14);
-  // Its slope at zero, (b2^2 - b1^2) / (2 a1 b1).
+  // Its slope at zero, (b2^2 - b1^2) / (2 a1 b1), which is also its largest
+  // secant gain. The evenly spaced shape of FL2C's automatic calibration:
+  // slope 1.5 at zero, R(x) = -x at every half step from a1/2 to a3 (two
+  // equal clipped triangles, or one full one, centred at -x), and a secant
+  // gain between 0.947 and 1.5 on (0, a3] (FL2C relies on it staying below
+  // 2).
   EXPECT_NEAR(paper(1e-7) / 1e-7, -(0.25 - 0.0025) / 0.1, 1e-5);
+  EXPECT_NEAR(FL2CSolver::largest_secant_gain(paper), 2.475, 1e-12);
+  EXPECT_NEAR(FL2CSolver::largest_secant_gain(R), 1.5, 1e-12);
+  for (const double x : {0.5, 1., 1.5, 2., 2.5, 3.})
+    EXPECT_NEAR(R(x), -x, 1e-14) << "x = " << x;
+  for (double x = 1e-3; x <= 3; x += 1e-3)
+  {
+    EXPECT_GE(-R(x) / x, 0.947) << "x = " << x;
+    EXPECT_LE(-R(x) / x, 1.5) << "x = " << x;
+  }
 }
 
 // A second method: the centroid by a fine midpoint rule on the aggregated
