@@ -3,14 +3,18 @@
 #   cmake -DPROGRAM=<exe> -DPRM=<step .prm> -DSCENE=<scene .prm>
 #         -DWORKDIR=<folder> -DOUTPUT=<output folder name>
 #         [-DEDIT_FILE=step|scene -DEDIT_FROM=<text> -DEDIT_TO=<text>]
+#         [-DEDIT2_FILE=step|scene -DEDIT2_FROM=<text> -DEDIT2_TO=<text>]
+#         [-DEXTRA_SCENES=<scene .prm>;...]
 #         -DEXPECT=success|failure [-DMESSAGE=<regex>]
 #         [-DJSON_CHECKS=<check script>] [-DEXTRA_FILES=<file>,<file>...]
 #         -P run_program.cmake
 #
 # The step file and its scene are copied into WORKDIR (optionally with one
-# text replacement, to make a bad input out of a good one) and the program
-# runs there. For EXPECT=failure the program must exit non-zero, print a
-# message matching MESSAGE on stderr and leave no output folder. For
+# or two text replacements, to make a bad input out of a good one or a
+# quick run out of a long one), and so are EXTRA_SCENES (unedited) for
+# programs that read several scenes; the program runs there. For
+# EXPECT=failure the program must exit non-zero, print a message matching
+# MESSAGE on stderr and leave no output folder. For
 # EXPECT=success it must exit 0 and write OUTPUT/results.json; JSON_CHECKS
 # then names a CMake script that inspects the variable RESULTS_JSON.
 # EXTRA_FILES (comma-separated) are copied into WORKDIR unchanged, for step
@@ -22,23 +26,28 @@ get_filename_component(prm_name "${PRM}" NAME)
 get_filename_component(scene_name "${SCENE}" NAME)
 file(READ "${PRM}" prm_text)
 file(READ "${SCENE}" scene_text)
-if(DEFINED EDIT_FILE)
-  if(EDIT_FILE STREQUAL "step")
-    set(edited "${prm_text}")
-  else()
-    set(edited "${scene_text}")
+foreach(edit EDIT EDIT2)
+  if(DEFINED ${edit}_FILE)
+    if(${edit}_FILE STREQUAL "step")
+      set(edited "${prm_text}")
+    else()
+      set(edited "${scene_text}")
+    endif()
+    string(FIND "${edited}" "${${edit}_FROM}" position)
+    if(position EQUAL -1)
+      message(FATAL_ERROR "test setup: <${${edit}_FROM}> not found in the ${${edit}_FILE} file")
+    endif()
+    string(REPLACE "${${edit}_FROM}" "${${edit}_TO}" edited "${edited}")
+    if(${edit}_FILE STREQUAL "step")
+      set(prm_text "${edited}")
+    else()
+      set(scene_text "${edited}")
+    endif()
   endif()
-  string(FIND "${edited}" "${EDIT_FROM}" position)
-  if(position EQUAL -1)
-    message(FATAL_ERROR "test setup: <${EDIT_FROM}> not found in the ${EDIT_FILE} file")
-  endif()
-  string(REPLACE "${EDIT_FROM}" "${EDIT_TO}" edited "${edited}")
-  if(EDIT_FILE STREQUAL "step")
-    set(prm_text "${edited}")
-  else()
-    set(scene_text "${edited}")
-  endif()
-endif()
+endforeach()
+foreach(extra ${EXTRA_SCENES})
+  file(COPY "${extra}" DESTINATION "${WORKDIR}")
+endforeach()
 file(WRITE "${WORKDIR}/${prm_name}" "${prm_text}")
 file(WRITE "${WORKDIR}/${scene_name}" "${scene_text}")
 if(DEFINED EXTRA_FILES)

@@ -1,0 +1,20 @@
+# Checks step-3's results.json at zero load: every solver of every case
+# reports exactly zero contact forces and displacements (not NaN, which
+# nlohmann::json would write as null).
+string(JSON n_cases LENGTH "${RESULTS_JSON}" cases)
+math(EXPR last_case "${n_cases} - 1")
+foreach(c RANGE ${last_case})
+  string(JSON scene GET "${RESULTS_JSON}" cases ${c} scene)
+  string(JSON n_solvers LENGTH "${RESULTS_JSON}" cases ${c} solvers)
+  math(EXPR last_solver "${n_solvers} - 1")
+  foreach(s RANGE ${last_solver})
+    string(JSON name GET "${RESULTS_JSON}" cases ${c} solvers ${s} name)
+    foreach(key Fn Ft slave_ux slave_uy)
+      string(JSON value GET "${RESULTS_JSON}" cases ${c} solvers ${s} ${key})
+      if(NOT value EQUAL 0)
+        message(FATAL_ERROR "${scene}: ${name} ${key} = ${value} at zero load")
+      endif()
+    endforeach()
+  endforeach()
+endforeach()
+message(STATUS "zero load: ${n_cases} cases, all forces and displacements 0")

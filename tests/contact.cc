@@ -1,0 +1,1392 @@
+// Tests of the contact part (issue 4): the contact geometry and operator C
+// against hand-computed values, action and reaction, equilibrium with the
+// clamp reactions, the Mamdani regulator against hand-computed centroids,
+// the exact solvers against hand-solved problems, beam theory and each
+// other, FL2C against the exact solvers, the fuzzy-study contract (rebuild
+// from small matrices), and the hard and bad cases. All on the 1510-DoF
+// meshes (a few on 5418), so that the whole file runs in seconds.
+
+#include <fuzzycontact/active_set_solver.h>
+#include <fuzzycontact/beam_theory.h>
+#include <fuzzycontact/component.h>
+#include <fuzzycontact/contact_interface.h>
+#include <fuzzycontact/contact_problem.h>
+#include <fuzzycontact/fl2c.h>
+#include <fuzzycontact/full_order_contact.h>
+#include <fuzzycontact/fuzzy_regulator.h>
+#include <fuzzycontact/input.h>
+#include <fuzzycontact/modal_solver.h>
+#include <fuzzycontact/reduced_model.h>
+#include <fuzzycontact/scene.h>
+#include <fuzzycontact/sparse_direct_solver.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <memory>
+#include <random>
+#include <sstream>
+
+using namespace FuzzyContact;
+
+namespace
+{
+  const std::string source_dir = FUZZYCONTACT_SOURCE_DIR;
+
+  std::string
+  scene_text(const std::string &name)
+  {
+    return Input::read_text_file(source_dir + "/prm/" + name + ".prm");
+  }
+
+  std::string
+  replace(std::string text, const std::string &from, const std::string &to)
+  {
+    const auto pos = text.find(from);
+    EXPECT_NE(pos, std::string::npos)
+      << "test setup: <" << from << "> not found";
+    if (pos != std::string::npos)
+      text.replace(pos, from.size(), to);
+    return text;
+  }
+
+  // The message of an exception thrown by @p f ("" if none).
+  template <typename F>
+  std::string
+  error_of(const F &f)
+  {
+    try
+    {
+      f();
+    }
+    catch (const dealii::ExceptionBase &e)
+    {
+      return Input::message_of(e);
+    }
+    return "";
+  }
+
+  // A scene with its components and contact interface.
+  struct Bodies
+  {
+    Scene                                   scene;
+    std::vector<std::unique_ptr<Component>> owned;
+    std::vector<const Component *>          components;
+    std::unique_ptr<ContactInterface>       interface;
+
+    explicit Bodies(const Scene &s, const unsigned int refinements = 0)
+        : scene(s)
+    {
+      for (const ComponentDescription &d : scene.components)
+      {
+        owned.push_back(
+          std::make_unique<Component>(d, scene.plane_model, refinements));
+        components.push_back(owned.back().get());
+      }
+      interface = std::make_unique<ContactInterface>(scene, components);
+    }
+
+    // The report nodes of step-3: the slave node farthest along tau.
+    ReportNodes
+    report() const
+    {
+      unsigned int best = 0;
+      for (unsigned int k = 1; k < interface->n_nodes(); ++k)
+        if (interface->node(k).tangent * interface->node(k).slave.position >
+            interface->node(best).tangent *
+              interface->node(best).slave.position)
+          best = k;
+      return interface->report_nodes(best);
+    }
+
+    std::vector<std::vector<types::global_dof_index>>
+    observed(const ReportNodes &r) const
+    {
+      std::vector<std::vector<types::global_dof_index>> dofs(components.size());
+      for (const FaceNode *node : {&r.slave, &r.master[0], &r.master[1]})
+        for (unsigned int d = 0; d < 2; ++d)
+          dofs[node->component].push_back(node->dofs[d]);
+      return dofs;
+    }
+  };
+
+  // Modes and a reduced contact model of a setup.
+  struct Reduced
+  {
+    std::vector<ModalBasis>                        bases;
+    std::vector<std::unique_ptr<ReducedComponent>> components;
+    std::unique_ptr<ReducedContactModel>           model;
+
+    Reduced(const Bodies      &setup,
+            const bool         corrected,
+            const unsigned int n_modes = 9)
+    {
+      ModalParameters parameters;
+      parameters.n_modes = n_modes;
+      const ModalSolver solver(parameters);
+      const auto        observed = setup.observed(setup.report());
+      std::vector<ReducedComponentMatrices> matrices;
+      bases.reserve(setup.components.size());
+      for (unsigned int c = 0; c < setup.components.size(); ++c)
+      {
+        const Component &component = *setup.components[c];
+        bases.push_back(solver.solve(component.stiffness_matrix(),
+                                     component.mass_matrix(),
+                                     component.name()));
+      }
+      for (unsigned int c = 0; c < setup.components.size(); ++c)
+      {
+        components.push_back(
+          std::make_unique<ReducedComponent>(*setup.components[c],
+                                             bases[c],
+                                             setup.interface->contact_dofs(c),
+                                             corrected));
+        matrices.push_back(
+          components.back()->matrices(setup.interface->gap_operator(c),
+                                      observed[c]));
+      }
+      model = std::make_unique<ReducedContactModel>(
+        std::move(matrices),
+        setup.interface->initial_gaps(),
+        setup.interface->friction_coefficients());
+    }
+
+    ContactSolution
+    exact(const Bodies      &setup,
+          const double       load_factor = 1,
+          const unsigned int n_steps     = 1) const
+    {
+      const ReportNodes  report = setup.report();
+      const ContactState state =
+        ActiveSetSolver().solve(model->problem(), load_factor, n_steps, "test");
+      return model->solution(state, load_factor, &report, "reduced_exact");
+    }
+
+    ContactSolution
+    fl2c(const Bodies         &setup,
+         const double          load_factor = 1,
+         const FL2CParameters &parameters  = FL2CParameters(),
+         const unsigned int    n_steps     = 1) const
+    {
+      const ReportNodes  report = setup.report();
+      const ContactState state =
+        FL2CSolver(parameters)
+          .solve(model->problem(), load_factor, n_steps, "test");
+      return model->solution(state, load_factor, &report, "fl2c");
+    }
+  };
+
+  ContactSolution
+  full_order(const Bodies      &setup,
+             const double       load_factor = 1,
+             const unsigned int n_steps     = 1)
+  {
+    FullOrderContact full(setup.components, *setup.interface);
+    full.set_load_factor(load_factor);
+    full.set_n_load_steps(n_steps);
+    const ReportNodes report = setup.report();
+    return full.solve(&report);
+  }
+
+  double
+  relative(const double a, const double b)
+  {
+    return std::abs(a - b) / std::abs(b);
+  }
+
+  double
+  relative(const std::array<double, 2> &a, const std::array<double, 2> &b)
+  {
+    return std::hypot(a[0] - b[0], a[1] - b[1]) / std::hypot(b[0], b[1]);
+  }
+
+  // Two blocks with non-matching meshes: the slave block [0.1, 0.9] x
+  // [0.001, 0.2] (2 x 1 cells of Q2, clamped on top) rests on the master
+  // block [0, 1] x [-0.3, 0] (3 x 1 cells, clamped at the bottom).
+  const std::string blocks_scene = R"(
+subsection Scene
+  set name            = blocks
+  set components      = S, M
+  set contact pairs   = c
+end
+subsection Component S
+  set lower left corner  = 0.1, 0.001
+  set upper right corner = 0.9, 0.2
+  set subdivisions       = 2, 1
+  set clamped faces      = top
+end
+subsection Component M
+  set lower left corner  = 0, -0.3
+  set upper right corner = 1, 0
+  set subdivisions       = 3, 1
+  set clamped faces      = bottom
+end
+subsection Contact c
+  set slave component  = S
+  set slave face       = bottom
+  set master component = M
+  set master face      = top
+  set friction coefficient = 0.2
+end
+)";
+
+  // The same with a vertical interface: S = [0, 0.2] x [0, 1] touches
+  // M = [0.2005, 0.5] x [-0.2, 1.2] with its right face.
+  const std::string side_scene = R"(
+subsection Scene
+  set name            = side
+  set components      = S, M
+  set contact pairs   = c
+end
+subsection Component S
+  set lower left corner  = 0, 0
+  set upper right corner = 0.2, 1
+  set subdivisions       = 1, 2
+  set clamped faces      = left
+end
+subsection Component M
+  set lower left corner  = 0.2005, -0.2
+  set upper right corner = 0.5, 1.2
+  set subdivisions       = 1, 4
+  set clamped faces      = right
+end
+subsection Contact c
+  set slave component  = S
+  set slave face       = right
+  set master component = M
+  set master face      = left
+end
+)";
+
+  const ContactNode *
+  node_at(const ContactInterface &interface, const Point<2> &p)
+  {
+    for (const ContactNode &node : interface.nodes())
+      if (node.slave.position.distance(p) < 1e-12)
+        return &node;
+    return nullptr;
+  }
+} // namespace
+
+
+// ----------------------------------------------------------------------------
+// Contact geometry and the operator C
+// ----------------------------------------------------------------------------
+
+// Q2 shape functions on a segment with nodes at xi = 0, 1/2, 1:
+// N0 = 2 (xi - 1/2)(xi - 1), N1 = -4 xi (xi - 1), N2 = 2 xi (xi - 1/2).
+TEST(ContactInterface, ProjectionAndOperatorMatchHandComputedGeometry)
+{
+  const Bodies            setup(Scene::read_from_string(blocks_scene));
+  const ContactInterface &interface = *setup.interface;
+  // Slave nodes at x = 0.1, 0.3, 0.5, 0.7, 0.9; the master segments are
+  // [0, 1/3], [1/3, 2/3], [2/3, 1].
+  ASSERT_EQ(interface.n_nodes(), 5u);
+  EXPECT_EQ(interface.n_rows(), 10u);
+
+  struct Expected
+  {
+    double                x;
+    double                xi;
+    std::array<double, 3> N;
+    std::array<double, 3> master_x;
+  };
+  const std::vector<Expected> expected = {
+    {0.1, 0.3, {{0.28, 0.84, -0.12}}, {{0, 1. / 6, 1. / 3}}},
+    {0.3, 0.9, {{-0.08, 0.36, 0.72}}, {{0, 1. / 6, 1. / 3}}},
+    {0.5, 0.5, {{0, 1, 0}}, {{1. / 3, 0.5, 2. / 3}}},
+    {0.7, 0.1, {{0.72, 0.36, -0.08}}, {{2. / 3, 5. / 6, 1}}},
+    {0.9, 0.7, {{-0.12, 0.84, 0.28}}, {{2. / 3, 5. / 6, 1}}}};
+  for (const Expected &e : expected)
+  {
+    const ContactNode *node = node_at(interface, Point<2>(e.x, 0.001));
+    ASSERT_NE(node, nullptr) << "no slave node at x = " << e.x;
+    EXPECT_NEAR(node->xi, e.xi, 1e-12) << "x = " << e.x;
+    ASSERT_EQ(node->master_nodes.size(), 3u);
+    for (unsigned int i = 0; i < 3; ++i)
+    {
+      EXPECT_NEAR(node->shape_values[i], e.N[i], 1e-12) << "x = " << e.x;
+      EXPECT_NEAR(node->master_nodes[i].position[0], e.master_x[i], 1e-12);
+      EXPECT_NEAR(node->master_nodes[i].position[1], 0., 1e-12);
+    }
+    EXPECT_NEAR(node->normal[0], 0., 1e-15);
+    EXPECT_NEAR(node->normal[1], 1., 1e-15);
+    EXPECT_NEAR(node->tangent[0], 1., 1e-15);
+    EXPECT_NEAR(node->tangent[1], 0., 1e-15);
+    EXPECT_NEAR(node->initial_gap, 0.001, 1e-15);
+    EXPECT_NEAR(node->projection[0], e.x, 1e-12);
+    EXPECT_EQ(node->friction_coefficient, 0.2);
+
+    // The rows of C: +n (+tau) on the slave node, -N_i n (-N_i tau) on the
+    // master nodes; x and y DoFs, in the blocks of S (0) and M (1).
+    const unsigned int k  = node - interface.nodes().data();
+    const auto        &CS = interface.gap_operator(0);
+    const auto        &CM = interface.gap_operator(1);
+    EXPECT_EQ(CS.el(normal_row(k), node->slave.dofs[1]), 1.);
+    EXPECT_EQ(CS.el(normal_row(k), node->slave.dofs[0]), 0.);
+    EXPECT_EQ(CS.el(tangential_row(k), node->slave.dofs[0]), 1.);
+    EXPECT_EQ(CS.el(tangential_row(k), node->slave.dofs[1]), 0.);
+    for (unsigned int i = 0; i < 3; ++i)
+    {
+      const auto &dofs = node->master_nodes[i].dofs;
+      EXPECT_NEAR(CM.el(normal_row(k), dofs[1]), -e.N[i], 1e-12);
+      EXPECT_NEAR(CM.el(tangential_row(k), dofs[0]), -e.N[i], 1e-12);
+      EXPECT_EQ(CM.el(normal_row(k), dofs[0]), 0.);
+    }
+  }
+
+  // g = g0 + C u: a rigid translation (a, b) of both bodies leaves the gaps
+  // unchanged; of the slave alone it adds b to g_n and a to g_t.
+  std::vector<Vector<double>> u;
+  for (const Component *c : setup.components)
+    u.push_back(c->rigid_body_motions()[0]);
+  for (unsigned int c = 0; c < 2; ++c)
+  {
+    u[c] *= 0.3;
+    u[c].add(-0.2, setup.components[c]->rigid_body_motions()[1]);
+    // clamped DoFs do not move
+    for (unsigned int i = 0; i < u[c].size(); ++i)
+      if (setup.components[c]->is_constrained(i))
+        u[c][i] = 0;
+  }
+  const Vector<double> g_both  = interface.gaps(u);
+  u[1]                         = 0;
+  const Vector<double> g_slave = interface.gaps(u);
+  for (unsigned int k = 0; k < interface.n_nodes(); ++k)
+  {
+    EXPECT_NEAR(g_both[normal_row(k)], 0.001, 1e-14);
+    EXPECT_NEAR(g_both[tangential_row(k)], 0., 1e-14);
+    EXPECT_NEAR(g_slave[normal_row(k)], 0.001 - 0.2, 1e-14);
+    EXPECT_NEAR(g_slave[tangential_row(k)], 0.3, 1e-14);
+  }
+}
+
+TEST(ContactInterface, VerticalInterfaceHasItsNormalAndTangent)
+{
+  const Bodies setup(Scene::read_from_string(side_scene));
+  // Slave nodes of S's right face: y = 0, 0.25, ..., 1 (5 nodes), all
+  // opposite M's left face [-0.2, 1.2]; master segments of length 0.35.
+  ASSERT_EQ(setup.interface->n_nodes(), 5u);
+  const ContactNode *node = node_at(*setup.interface, Point<2>(0.2, 0.25));
+  ASSERT_NE(node, nullptr);
+  // n = outward normal of M's left face, tau = n turned clockwise.
+  EXPECT_EQ(node->normal[0], -1.);
+  EXPECT_EQ(node->normal[1], 0.);
+  EXPECT_EQ(node->tangent[0], 0.);
+  EXPECT_EQ(node->tangent[1], 1.);
+  EXPECT_NEAR(node->initial_gap, 0.0005, 1e-15);
+  // The projection y = 0.25 lies on the segment [0.15, 0.5]: xi = 2/7.
+  const double xi = 2. / 7.;
+  EXPECT_NEAR(node->xi, xi, 1e-12);
+  EXPECT_NEAR(node->shape_values[0], 2 * (xi - 0.5) * (xi - 1), 1e-12);
+  EXPECT_NEAR(node->shape_values[1], -4 * xi * (xi - 1), 1e-12);
+  EXPECT_NEAR(node->shape_values[2], 2 * xi * (xi - 0.5), 1e-12);
+  // Q2 tributary lengths of the slave face nodes (two cells of 0.5):
+  // vertices 1/6 of a cell each side, mid-side nodes 2/3.
+  EXPECT_NEAR(node->tributary_length, 2. / 3 * 0.5, 1e-12);
+  EXPECT_NEAR(node_at(*setup.interface, Point<2>(0.2, 0.5))->tributary_length,
+              2. / 6 * 0.5,
+              1e-12);
+  EXPECT_NEAR(node_at(*setup.interface, Point<2>(0.2, 0))->tributary_length,
+              1. / 6 * 0.5,
+              1e-12);
+}
+
+TEST(ContactInterface, OverlapSceneHasTheExpectedCandidates)
+{
+  const Bodies setup(Scene::read(source_dir + "/prm/overlap.prm"));
+  // P1's bottom face has 151 nodes at spacing 0.2/150; those at x >= 0.1
+  // (k = 75..150) lie opposite P2's top face.
+  EXPECT_EQ(setup.interface->n_nodes(), 76u);
+  const ReportNodes report = setup.report();
+  EXPECT_NEAR(report.slave.position[0], 0.2, 1e-14);
+  EXPECT_NEAR(report.slave.position[1], 1e-8, 1e-20);
+  // x = 0.2 is the mid-side node of P2's cell [0.2 - h/2, 0.2 + h/2],
+  // h = 0.2/75, whose vertices are the two master report nodes.
+  const double h = 0.2 / 75;
+  EXPECT_NEAR(report.master[0].position[0], 0.2 - h / 2, 1e-12);
+  EXPECT_NEAR(report.master[1].position[0], 0.2 + h / 2, 1e-12);
+  for (const ContactNode &node : setup.interface->nodes())
+    EXPECT_NEAR(node.initial_gap, 1e-8, 1e-15);
+
+  // stacked: the clamped slave node at x = 0 faces clamped master nodes
+  // only and is no candidate; the other 150 are.
+  const Bodies stacked(Scene::read(source_dir + "/prm/stacked.prm"));
+  EXPECT_EQ(stacked.interface->n_nodes(), 150u);
+}
+
+TEST(ContactInterface, ContactForcesSumToZeroOverBothBodies)
+{
+  for (const std::string &text :
+       {blocks_scene, side_scene, scene_text("overlap")})
+  {
+    const Bodies                           setup(Scene::read_from_string(text));
+    const ContactInterface                &interface = *setup.interface;
+    std::mt19937                           random(42);
+    std::uniform_real_distribution<double> uniform(-1000, 1000);
+    Vector<double> p(interface.n_rows()), p_normal(interface.n_rows());
+    for (unsigned int i = 0; i < p.size(); ++i)
+      p[i] = uniform(random);
+    for (unsigned int k = 0; k < interface.n_nodes(); ++k)
+      p_normal[normal_row(k)] = p[normal_row(k)];
+
+    for (const Vector<double> *forces : {&p, &p_normal})
+    {
+      const std::vector<Vector<double>> f = interface.nodal_forces(*forces);
+      double                            sum[2] = {0, 0}, moment = 0, scale = 0;
+      for (unsigned int c = 0; c < 2; ++c)
+      {
+        const Component &component = *setup.components[c];
+        for (unsigned int i = 0; i < f[c].size(); ++i)
+        {
+          const unsigned int d = component.dof_directions()[i];
+          const Point<2>    &x = component.support_points()[i];
+          sum[d] += f[c][i];
+          moment += (d == 1 ? x[0] : -x[1]) * f[c][i];
+          scale += std::abs(f[c][i]);
+        }
+      }
+      EXPECT_NEAR(sum[0], 0., 1e-13 * scale) << interface.node(0).pair;
+      EXPECT_NEAR(sum[1], 0., 1e-13 * scale);
+      // The pair's forces are offset by g0 n: moment -g0 p_t each.
+      double expected_moment = 0;
+      for (unsigned int k = 0; k < interface.n_nodes(); ++k)
+        expected_moment -=
+          interface.node(k).initial_gap * (*forces)[tangential_row(k)];
+      EXPECT_NEAR(moment, expected_moment, 1e-12 * scale);
+    }
+  }
+}
+
+TEST(ContactInterface, RefusesFacesThatCannotTouch)
+{
+  const std::string same_direction = error_of(
+    [&]()
+    {
+      Bodies(Scene::read_from_string(replace(scene_text("overlap"),
+                                             "set master face          = top",
+                                             "set master face = bottom")));
+    });
+  EXPECT_NE(same_direction.find("Contact interface: the slave face (P1 "
+                                "bottom) and the master face (P2 bottom) "
+                                "cannot touch"),
+            std::string::npos)
+    << same_direction;
+
+  const std::string apart = error_of(
+    [&]()
+    {
+      Bodies(Scene::read_from_string(
+        replace(replace(scene_text("overlap"),
+                        "set lower left corner  = 0.1, -0.008",
+                        "set lower left corner  = 0.3, -0.008"),
+                "set upper right corner = 0.3, 0",
+                "set upper right corner = 0.5, 0")));
+    });
+  EXPECT_NE(apart.find("no node of the slave face (P1 bottom) lies opposite "
+                       "the master face (P2 top)"),
+            std::string::npos)
+    << apart;
+}
+
+TEST(ContactInterface, RefusesInitialPenetration)
+{
+  const std::string declared = error_of(
+    [&]()
+    {
+      Bodies(Scene::read_from_string(replace(scene_text("overlap"),
+                                             "set initial gap          = auto",
+                                             "set initial gap = -1e-3")));
+    });
+  EXPECT_NE(declared.find("Contact interface: initial penetration of 0.001 m "
+                          "at the slave node ("),
+            std::string::npos)
+    << declared;
+
+  const std::string geometric = error_of(
+    [&]()
+    {
+      Bodies(Scene::read_from_string(replace(scene_text("overlap"),
+                                             "set lower left corner  = 0, 1e-8",
+                                             "set lower left corner  = 0, "
+                                             "-1e-4")));
+    });
+  EXPECT_NE(geometric.find("initial penetration of 0.0001 m"),
+            std::string::npos)
+    << geometric;
+
+  // Below the tolerance (1e-8 of the 0.2 m master face): round-off, set to
+  // zero.
+  const Bodies touching(
+    Scene::read_from_string(replace(scene_text("overlap"),
+                                    "set initial gap          = auto",
+                                    "set initial gap = -1e-10")));
+  for (const ContactNode &node : touching.interface->nodes())
+    EXPECT_EQ(node.initial_gap, 0.);
+}
+
+TEST(ContactInterface, GapOffsetAndFrictionCoefficientCanChange)
+{
+  Bodies setup(Scene::read(source_dir + "/prm/overlap.prm"));
+  setup.interface->set_gap_offset(1e-4);
+  const Vector<double> g = setup.interface->initial_gaps();
+  for (unsigned int k = 0; k < setup.interface->n_nodes(); ++k)
+  {
+    EXPECT_NEAR(g[normal_row(k)], 1e-8 + 1e-4, 1e-18);
+    EXPECT_EQ(g[tangential_row(k)], 0.);
+  }
+  EXPECT_NE(error_of(
+              [&]()
+              {
+                setup.interface->set_gap_offset(-1e-3);
+              })
+              .find("makes the initial gap of the slave node"),
+            std::string::npos);
+  EXPECT_NE(error_of(
+              [&]()
+              {
+                setup.interface->set_friction_coefficient(-0.1);
+              })
+              .find("friction coefficient must not be negative"),
+            std::string::npos);
+  setup.interface->set_friction_coefficient(5);
+  for (const double mu : setup.interface->friction_coefficients())
+    EXPECT_EQ(mu, 5.);
+}
+
+
+// ----------------------------------------------------------------------------
+// The Mamdani regulator
+// ----------------------------------------------------------------------------
+
+TEST(MamdaniRegulator, InputTermsAreAPartitionOfUnityWithShoulders)
+{
+  const MamdaniRegulator R({{1, 5, 10}}, {{0.05, 0.5, 1.5}});
+  // Term order NL NM NS Z PS PM PL.
+  const auto d0 = R.fuzzify(0);
+  EXPECT_EQ(d0[3], 1.);
+  const auto d3 = R.fuzzify(3); // PS = (5 - 3) / 4, PM = (3 - 1) / 4
+  EXPECT_DOUBLE_EQ(d3[4], 0.5);
+  EXPECT_DOUBLE_EQ(d3[5], 0.5);
+  const auto d8 = R.fuzzify(-8); // NM = (10 - 8) / 5, NL = (8 - 5) / 5
+  EXPECT_DOUBLE_EQ(d8[1], 0.4);
+  EXPECT_DOUBLE_EQ(d8[0], 0.6);
+  // The shoulders: 1 from a3 on, however far.
+  EXPECT_EQ(R.fuzzify(10)[6], 1.);
+  EXPECT_EQ(R.fuzzify(1e9)[6], 1.);
+  EXPECT_EQ(R.fuzzify(-1e9)[0], 1.);
+  for (double x = -12; x <= 12; x += 0.37)
+  {
+    double sum = 0;
+    for (const double mu : R.fuzzify(x))
+      sum += mu;
+    EXPECT_NEAR(sum, 1., 1e-15) << "x = " << x;
+  }
+}
+
+// Centroids computed by hand (areas and first moments of the piecewise
+// linear aggregate) for a = (1, 2, 3), b = (1, 2, 3):
+//  x = 0:    Z fires alone, the full triangle (-1, 0, 1): centroid 0.
+//  x = 0.5:  Z and PS at 1/2 -> Z and NS clipped at 1/2: a trapezoid from
+//            -2 to 1 with plateau [-1.5, 0.5], symmetric about -0.5.
+//  x = 0.25: Z = 3/4, PS = 1/4: NS clipped at 1/4 on [-2, 0], Z clipped
+//            at 3/4: pieces [-2, -1.75] rising to 1/4, plateau 1/4 on
+//            [-1.75, -0.75], rising to 3/4 on [-0.75, -0.25], plateau 3/4
+//            to 0.25, falling to 0 at 1: area 19/16, moment -11/32,
+//            centroid -11/38.
+//  x = 2.5:  PM and PL at 1/2 -> NM and NL clipped at 1/2: a trapezoid from
+//            -4 to -1 with plateau [-3.5, -1.5], centroid -2.5.
+//  x >= 3:   PL alone -> NL = tri(-4, -3, -2) in full: centroid -3.
+TEST(MamdaniRegulator, CentroidsMatchHandComputedValues)
+{
+  const MamdaniRegulator R({{1, 2, 3}}, {{1, 2, 3}});
+  EXPECT_NEAR(R(0), 0., 1e-15);
+  EXPECT_NEAR(R(0.5), -0.5, 1e-14);
+  EXPECT_NEAR(R(0.25), -11. / 38., 1e-14);
+  EXPECT_NEAR(R(2.5), -2.5, 1e-14);
+  EXPECT_NEAR(R(3), -3., 1e-14);
+  EXPECT_NEAR(R(50), -3., 1e-14);
+  // The rules mirror: a penetration (negative gap) asks for more force.
+  EXPECT_NEAR(R(-0.25), 11. / 38., 1e-14);
+  EXPECT_NEAR(R(-50), 3., 1e-14);
+  EXPECT_EQ(R.output_bound(), 4.);
+
+  // The paper's Table 2 shape, a = (1, 5, 10), b = (0.05, 0.5, 1.5), at
+  // x = 7.5 (PM = PL = 1/2; outermost foot 2 b3 - b2 = 2.5): rising on
+  // [-2.5, -2], plateau 1/2 on [-2, -0.275], falling to 0 at -0.05.
+  // Area 0.125 + 0.8625 + 0.05625; moment -0.27083.. - 0.98109375 -
+  // 0.01125.
+  const MamdaniRegulator paper({{1, 5, 10}}, {{0.05, 0.5, 1.5}});
+  const double           area   = 0.125 + 0.5 * 1.725 + 0.5 * 0.5 * 0.225;
+  const double           moment = 0.5 / 6 * 0.5 * (-2.5 - 4) +
+                        0.5 * (0.275 * 0.275 - 4) / 2 +
+                        0.225 / 6 * 0.5 * (2 * -0.275 - 0.05);
+  EXPECT_NEAR(paper(7.5), moment / area, 1e-14);
+  // Its slope at zero, (b2^2 - b1^2) / (2 a1 b1), which is also its largest
+  // secant gain. The evenly spaced shape of FL2C's automatic calibration:
+  // slope 1.5 at zero, R(x) = -x at every half step from a1/2 to a3 (two
+  // equal clipped triangles, or one full one, centred at -x), and a secant
+  // gain between 0.947 and 1.5 on (0, a3] (FL2C relies on it staying below
+  // 2).
+  EXPECT_NEAR(paper(1e-7) / 1e-7, -(0.25 - 0.0025) / 0.1, 1e-5);
+  EXPECT_NEAR(FL2CSolver::largest_secant_gain(paper), 2.475, 1e-12);
+  EXPECT_NEAR(FL2CSolver::largest_secant_gain(R), 1.5, 1e-12);
+  for (const double x : {0.5, 1., 1.5, 2., 2.5, 3.})
+    EXPECT_NEAR(R(x), -x, 1e-14) << "x = " << x;
+  for (double x = 1e-3; x <= 3; x += 1e-3)
+  {
+    EXPECT_GE(-R(x) / x, 0.947) << "x = " << x;
+    EXPECT_LE(-R(x) / x, 1.5) << "x = " << x;
+  }
+}
+
+// A second method: the centroid by a fine midpoint rule on the aggregated
+// membership function, for many inputs and three shapes.
+TEST(MamdaniRegulator, CentroidAgreesWithFineSampling)
+{
+  for (const auto &[a, b] :
+       {std::make_pair(std::array<double, 3>{{1, 2, 3}},
+                       std::array<double, 3>{{1, 2, 3}}),
+        std::make_pair(std::array<double, 3>{{1, 5, 10}},
+                       std::array<double, 3>{{0.05, 0.5, 1.5}}),
+        std::make_pair(std::array<double, 3>{{0.3, 0.4, 2}},
+                       std::array<double, 3>{{2, 7, 8}})})
+  {
+    const MamdaniRegulator R(a, b);
+    for (double x = -1.3 * a[2]; x <= 1.3 * a[2]; x += 0.173 * a[0])
+    {
+      const auto         strengths = R.rule_strengths(x);
+      const double       bound     = R.output_bound();
+      const unsigned int n         = 200000;
+      const double       h         = 2 * bound / n;
+      double             area = 0, moment = 0;
+      for (unsigned int i = 0; i < n; ++i)
+      {
+        const double y  = -bound + (i + 0.5) * h;
+        const double mu = R.aggregated_membership(strengths, y);
+        area += mu * h;
+        moment += y * mu * h;
+      }
+      EXPECT_NEAR(R(x), moment / area, 1e-6 * b[2]) << "x = " << x;
+    }
+    // Arbitrary strengths (not from a partition of unity), where
+    // neighbouring terms cross below both their clip levels.
+    std::mt19937                           random(7);
+    std::uniform_real_distribution<double> uniform(0, 1);
+    for (unsigned int trial = 0; trial < 20; ++trial)
+    {
+      MamdaniRegulator::Degrees strengths;
+      for (double &w : strengths)
+        w = (trial == 0 ? 1. : uniform(random));
+      const double       bound = R.output_bound();
+      const unsigned int n     = 200000;
+      const double       h     = 2 * bound / n;
+      double             area = 0, moment = 0;
+      for (unsigned int i = 0; i < n; ++i)
+      {
+        const double y  = -bound + (i + 0.5) * h;
+        const double mu = R.aggregated_membership(strengths, y);
+        area += mu * h;
+        moment += y * mu * h;
+      }
+      EXPECT_NEAR(R.centroid(strengths), moment / area, 1e-6 * b[2])
+        << "trial " << trial;
+    }
+  }
+}
+
+TEST(MamdaniRegulator, RefusesTransitionPointsOutOfOrder)
+{
+  EXPECT_NE(error_of(
+              []()
+              {
+                MamdaniRegulator({{1, 0.5, 3}}, {{1, 2, 3}});
+              })
+              .find("the input transition points must satisfy 0 < p1 < p2 "
+                    "< p3, got 1, 0.5, 3"),
+            std::string::npos);
+  EXPECT_NE(error_of(
+              []()
+              {
+                MamdaniRegulator({{1, 2, 3}}, {{0, 2, 3}});
+              })
+              .find("the output transition points must satisfy"),
+            std::string::npos);
+  FL2CParameters parameters;
+  parameters.force_points = {{500, 15000, 5000}};
+  EXPECT_NE(error_of(
+              [&]()
+              {
+                parameters.check();
+              })
+              .find("FL2C: gap points / force points: the output transition "
+                    "points must satisfy"),
+            std::string::npos);
+}
+
+
+// ----------------------------------------------------------------------------
+// The exact solver on problems solved by hand
+// ----------------------------------------------------------------------------
+
+namespace
+{
+  ContactProblem
+  small_problem(const FullMatrix<double>  &W,
+                const std::vector<double> &g_free,
+                const double               mu)
+  {
+    ContactProblem problem;
+    problem.W = W;
+    problem.g_initial.reinit(W.m());
+    problem.g_load.reinit(W.m());
+    for (unsigned int i = 0; i < W.m(); ++i)
+      problem.g_load[i] = g_free[i];
+    problem.mu.assign(W.m() / 2, mu);
+    return problem;
+  }
+} // namespace
+
+// One node, W = [2 0.5; 0.5 1] 1e-6 m/N, g_free = (-1 mm, +0.2 mm), mu =
+// 0.3. Sticking would need p = W^{-1} (1e-3, -2e-4) = (628.6, -514.3) N,
+// beyond the cone; slipping with p_t = -0.3 p_n: (2 - 0.15) 1e-6 p_n =
+// 1e-3, p_n = 540.54 N, and then dg_t = 2e-4 + (0.5 - 0.3) 540.54e-6 > 0,
+// against the friction force: consistent.
+TEST(ActiveSetSolver, SolvesAOneNodeProblemByHand)
+{
+  FullMatrix<double> W(2, 2);
+  W(0, 0) = 2e-6;
+  W(0, 1) = W(1, 0)            = 0.5e-6;
+  W(1, 1)                      = 1e-6;
+  const ContactProblem problem = small_problem(W, {-1e-3, 2e-4}, 0.3);
+  const ContactState   s       = ActiveSetSolver().solve(problem, 1, 1, "test");
+  EXPECT_NEAR(s.p[0], 1000 / 1.85, 1e-9);
+  EXPECT_NEAR(s.p[1], -0.3 * 1000 / 1.85, 1e-9);
+  EXPECT_EQ(s.status[0], ContactStatus::slip);
+  EXPECT_LE(s.residual, 1e-10);
+
+  // FL2C reaches the same answer within its tolerance.
+  FL2CParameters parameters;
+  parameters.tolerance = 1e-8;
+  const ContactState f = FL2CSolver(parameters).solve(problem, 1, 1, "test");
+  EXPECT_NEAR(f.p[0], 1000 / 1.85, 1e-4);
+  EXPECT_NEAR(f.p[1], -0.3 * 1000 / 1.85, 1e-4);
+
+  // With mu = 1 it sticks: p = (628.57, -514.29).
+  const ContactState stick =
+    ActiveSetSolver().solve(small_problem(W, {-1e-3, 2e-4}, 1.), 1, 1, "test");
+  EXPECT_NEAR(stick.p[0], 1100 / 1.75, 1e-9);
+  EXPECT_NEAR(stick.p[1], -900 / 1.75, 1e-9);
+  EXPECT_EQ(stick.status[0], ContactStatus::stick);
+}
+
+// Two coupled frictionless nodes: W_nn = [2 1; 1 2] 1e-6, g_free = (-1 mm,
+// +0.5 mm). Both closed would need p = (833.3, -666.7): node 2 in tension;
+// node 1 alone: p_1 = 500 N, and g_2 = 0.5 mm + 500e-6 mm/N > 0.
+TEST(ActiveSetSolver, OpensANodeInTension)
+{
+  FullMatrix<double> W(4, 4);
+  W(0, 0) = W(2, 2) = 2e-6;
+  W(0, 2) = W(2, 0) = 1e-6;
+  W(1, 1) = W(3, 3) = 1e-6;
+  const ContactState s =
+    ActiveSetSolver().solve(small_problem(W, {-1e-3, 0, 5e-4, 0}, 0.),
+                            1,
+                            1,
+                            "test");
+  EXPECT_NEAR(s.p[0], 500, 1e-9);
+  EXPECT_EQ(s.p[2], 0.);
+  EXPECT_EQ(s.status[1], ContactStatus::open);
+  EXPECT_NEAR(s.g[2], 1e-3, 1e-15);
+}
+
+TEST(ActiveSetSolver, ThrowsWithIterationsAndResidualWhenItRunsOut)
+{
+  FullMatrix<double> W(4, 4);
+  W(0, 0) = W(2, 2) = 2e-6;
+  W(0, 2) = W(2, 0) = 1e-6;
+  W(1, 1) = W(3, 3) = 1e-6;
+  ActiveSetParameters parameters;
+  parameters.max_iterations = 1;
+  const std::string message = error_of(
+    [&]()
+    {
+      ActiveSetSolver(parameters)
+        .solve(small_problem(W, {-1e-3, 1e-4, -1e-3, -2e-4}, 0.3),
+               1,
+               1,
+               "test");
+    });
+  EXPECT_NE(message.find("test: the "), std::string::npos) << message;
+  EXPECT_NE(message.find("max_iterations = 1"), std::string::npos) << message;
+}
+
+
+// ----------------------------------------------------------------------------
+// The full-order reference
+// ----------------------------------------------------------------------------
+
+// The clamps take what the load and the contact forces do not balance:
+// with K_free the stiffness without clamps (same DoF numbering), the
+// reactions are R = K_free u - f - C^T p; they vanish away from the clamps
+// and balance the load over both bodies, and each body's reaction equals
+// the contact force it receives.
+TEST(FullOrderContact, ForceBalanceWithTheClampReactions)
+{
+  for (const std::string name : {"overlap", "stacked"})
+  {
+    const Bodies setup(Scene::read(source_dir + "/prm/" + name + ".prm"));
+    const ContactSolution             s = full_order(setup);
+    const std::vector<Vector<double>> contact =
+      setup.interface->nodal_forces(s.p);
+    double total_y = 0;
+    for (unsigned int c = 0; c < 2; ++c)
+    {
+      ComponentDescription free = setup.scene.components[c];
+      free.clamped_faces.clear();
+      const Component unclamped(free, setup.scene.plane_model);
+      ASSERT_EQ(unclamped.n_dofs(), setup.components[c]->n_dofs());
+      Vector<double> R(unclamped.n_dofs());
+      unclamped.stiffness_matrix().vmult(R, s.displacements[c]);
+      R -= setup.components[c]->load_vector();
+      R -= contact[c];
+      double sum[2] = {0, 0}, off_clamp = 0;
+      for (unsigned int i = 0; i < R.size(); ++i)
+      {
+        if (setup.components[c]->is_constrained(i))
+          sum[setup.components[c]->dof_directions()[i]] += R[i];
+        else
+          off_clamp = std::max(off_clamp, std::abs(R[i]));
+      }
+      EXPECT_LE(off_clamp, 1e-6 * 50000) << name;
+      // P1 (slave): load (0, -F), contact (F_t, F_n): reaction (-F_t, F -
+      // F_n). P2 (master): contact (-F_t, -F_n): reaction (F_t, F_n).
+      const double F = 50000;
+      if (c == 0)
+      {
+        EXPECT_NEAR(sum[0], -s.tangential_force, 1e-7 * F) << name;
+        EXPECT_NEAR(sum[1], F - s.normal_force, 1e-7 * F) << name;
+      }
+      else
+      {
+        EXPECT_NEAR(sum[0], s.tangential_force, 1e-7 * F) << name;
+        EXPECT_NEAR(sum[1], s.normal_force, 1e-7 * F) << name;
+      }
+      total_y += sum[1];
+    }
+    EXPECT_NEAR(total_y, 50000, 1e-7 * 50000) << name;
+    EXPECT_LE(s.residual, 1e-10) << name;
+  }
+}
+
+// Beam theory for `stacked`: frictionless, the two beams share the load
+// equally, F L^3 / (3 E' 2I); full stick would make a composite beam of
+// height 2h, F L^3 / (3 E' 8I). The 2D model adds shear (Timoshenko:
+// +0.12 %), the tip contact force is slightly above F/2 (-0.5 % on P1's
+// share) and the report node is the bottom corner, not the centre line: the
+// frictionless deflection lies within 1 % of the equal-share value. Friction
+// at the few closed tip nodes stiffens the pair: the deflection falls with
+// mu and stays above the composite bound.
+TEST(FullOrderContact, StackedTipDeflectionLiesBetweenBeamTheoryBounds)
+{
+  Bodies     setup(Scene::read(source_dir + "/prm/stacked.prm"));
+  const auto beam =
+    BeamTheory::Beam::of(setup.scene.components[0], setup.scene.plane_model);
+  const double EI = beam.effective_modulus() * beam.second_moment_of_area();
+  const double L3 = std::pow(beam.length, 3);
+  const double equal_share = 50000 * L3 / (3 * EI * 2);
+  const double composite   = 50000 * L3 / (3 * EI * 8);
+
+  double previous = 0;
+  for (const double mu : {0., 0.3, 5.})
+  {
+    setup.interface->set_friction_coefficient(mu);
+    const ContactSolution s          = full_order(setup);
+    const double          deflection = -s.slave_displacement[1];
+    if (mu == 0)
+    {
+      EXPECT_NEAR(deflection, equal_share, 0.01 * equal_share);
+      EXPECT_NEAR(s.normal_force, 25000, 0.01 * 25000);
+    }
+    else
+      EXPECT_LT(deflection, previous) << "mu = " << mu;
+    EXPECT_GT(deflection, composite);
+    EXPECT_LE(std::abs(s.tangential_force), mu * s.normal_force * (1 + 1e-12));
+    EXPECT_LE(s.residual, 1e-10);
+    previous = deflection;
+  }
+}
+
+// Beam theory for `overlap`: with contact at P1's tip only, (F - N) L^3 =
+// N a^3 (a = 0.1 m), N = 8F/9; the 2D answer is within 0.5 %.
+TEST(FullOrderContact, OverlapNormalForceIsNearBeamTheory)
+{
+  Bodies setup(Scene::read(source_dir + "/prm/overlap.prm"));
+  setup.interface->set_friction_coefficient(0);
+  const ContactSolution s = full_order(setup);
+  EXPECT_NEAR(s.normal_force, 8. / 9 * 50000, 0.005 * 8. / 9 * 50000);
+  EXPECT_EQ(s.count(ContactStatus::slip) + s.count(ContactStatus::stick), 1u);
+}
+
+// A change of E of a whole component scales K: the factorisations are
+// reused (K^{-1} = K_ref^{-1} / s), and the answer equals a fresh solve.
+TEST(FullOrderContact, ReusesFactorisationsWhenAModulusScales)
+{
+  Bodies            setup(Scene::read(source_dir + "/prm/overlap.prm"));
+  FullOrderContact  full(setup.components, *setup.interface);
+  const ReportNodes report = setup.report();
+  full.solve(&report);
+  EXPECT_EQ(full.n_factorizations(), 2u);
+  setup.owned[0]->set_zone_materials({210e9 * 1.05}, {7900});
+  setup.owned[1]->set_zone_materials({210e9 * 0.97}, {7900});
+  const ContactSolution reused = full.solve(&report);
+  EXPECT_EQ(full.n_factorizations(), 2u);
+  const ContactSolution fresh = full_order(setup);
+  EXPECT_NEAR(reused.normal_force,
+              fresh.normal_force,
+              1e-9 * fresh.normal_force);
+  EXPECT_NEAR(reused.slave_displacement[1],
+              fresh.slave_displacement[1],
+              1e-9 * std::abs(fresh.slave_displacement[1]));
+  // A stiffer P1 keeps more of the load: in beam theory N = F / (1 +
+  // (a/L)^3 E1/E2).
+  setup.owned[0]->set_zone_materials({210e9}, {7900});
+  setup.owned[1]->set_zone_materials({210e9}, {7900});
+  EXPECT_LT(reused.normal_force, full.solve(&report).normal_force);
+  EXPECT_EQ(full.n_factorizations(), 2u);
+}
+
+TEST(FullOrderContact, WarmStartGivesTheSameAnswer)
+{
+  Bodies                setup(Scene::read(source_dir + "/prm/stacked.prm"));
+  FullOrderContact      full(setup.components, *setup.interface);
+  const ReportNodes     report = setup.report();
+  const ContactSolution cold   = full.solve(&report);
+  full.set_warm_start(true);
+  full.set_load_factor(1.1);
+  const ContactSolution warm = full.solve(&report);
+  full.set_warm_start(false);
+  const ContactSolution again = full.solve(&report);
+  EXPECT_NEAR(warm.normal_force, again.normal_force, 1e-9 * again.normal_force);
+  EXPECT_LE(warm.iterations, again.iterations);
+  EXPECT_GT(warm.normal_force, cold.normal_force);
+}
+
+
+// ----------------------------------------------------------------------------
+// Reduced models
+// ----------------------------------------------------------------------------
+
+// With static correction modes for every contact DoF and the load, the
+// reduced contact flexibility is the full one (a second, independent
+// computation: block elimination with the sparse factorisation).
+TEST(ReducedModel, StaticCorrectionMakesTheFlexibilityExact)
+{
+  for (const std::string name : {"overlap", "stacked"})
+  {
+    const Bodies     setup(Scene::read(source_dir + "/prm/" + name + ".prm"));
+    FullOrderContact full(setup.components, *setup.interface);
+    const FullMatrix<double> W  = full.flexibility();
+    const Vector<double>     gl = full.load_gaps();
+    const Reduced            corrected(setup, true);
+    FullMatrix<double>       difference = corrected.model->problem().W;
+    difference.add(-1., W);
+    EXPECT_LE(difference.frobenius_norm(), 1e-8 * W.frobenius_norm()) << name;
+    Vector<double> dg = corrected.model->problem().g_load;
+    dg -= gl;
+    EXPECT_LE(dg.linfty_norm(), 1e-8 * gl.linfty_norm()) << name;
+
+    // Modes only: W is the modal sum sum_j (phi_j^T c)(phi_j^T c)^T /
+    // lambda_j of each component, of rank at most 18, and smaller than the
+    // full W on the diagonal (the residual flexibility is missing).
+    const Reduced modes(setup, false);
+    const auto   &Wm = modes.model->problem().W;
+    for (unsigned int i = 0; i < Wm.m(); ++i)
+      EXPECT_LT(Wm(i, i), W(i, i) * (1 + 1e-12)) << name;
+    const unsigned int row       = normal_row(0);
+    double             modal_sum = 0;
+    for (unsigned int c = 0; c < 2; ++c)
+    {
+      const auto    &C = setup.interface->gap_operator(c);
+      Vector<double> column(setup.components[c]->n_dofs());
+      for (auto it = C.begin(row); it != C.end(row); ++it)
+        column[it->column()] = it->value();
+      for (unsigned int j = 0; j < modes.bases[c].size(); ++j)
+      {
+        const double a = modes.bases[c].modes[j] * column;
+        modal_sum += a * a / modes.bases[c].eigenvalues[j];
+      }
+    }
+    EXPECT_NEAR(Wm(row, row), modal_sum, 1e-8 * modal_sum) << name;
+  }
+}
+
+// The contract with the fuzzy study: W and g_load rebuilt from small
+// matrices only, here K_r = sum_z E_z (V^T K_z V) for new moduli of both
+// beams, agree with the full-order solver after set_zone_materials().
+TEST(ReducedModel, RebuildsFromSmallMatricesForNewModuli)
+{
+  Bodies                    setup(Scene::read(source_dir + "/prm/overlap.prm"));
+  const Reduced             nominal(setup, true);
+  const ReportNodes         report   = setup.report();
+  const auto                observed = setup.observed(report);
+  const std::vector<double> moduli   = {210e9 * 1.05, 210e9 * 0.95};
+
+  std::vector<ReducedComponentMatrices> matrices;
+  for (unsigned int c = 0; c < 2; ++c)
+  {
+    ReducedComponentMatrices m =
+      nominal.components[c]->matrices(setup.interface->gap_operator(c),
+                                      observed[c]);
+    m.stiffness = nominal.components[c]->zone_stiffness(0);
+    m.stiffness *= moduli[c];
+    matrices.push_back(std::move(m));
+  }
+  const ReducedContactModel rebuilt(std::move(matrices),
+                                    setup.interface->initial_gaps(),
+                                    setup.interface->friction_coefficients());
+  const ContactState        state =
+    ActiveSetSolver().solve(rebuilt.problem(), 1, 1, "rebuilt");
+  const ContactSolution r = rebuilt.solution(state, 1, &report, "rebuilt");
+
+  for (unsigned int c = 0; c < 2; ++c)
+    setup.owned[c]->set_zone_materials({moduli[c]}, {7900});
+  const ContactSolution f = full_order(setup);
+  EXPECT_NEAR(r.normal_force, f.normal_force, 1e-8 * f.normal_force);
+  EXPECT_NEAR(r.tangential_force,
+              f.tangential_force,
+              1e-8 * std::abs(f.tangential_force));
+  EXPECT_LE(relative(r.slave_displacement, f.slave_displacement), 1e-7);
+  for (unsigned int i = 0; i < 2; ++i)
+    EXPECT_LE(relative(r.master_displacements[i], f.master_displacements[i]),
+              1e-7);
+}
+
+// Displacements recovered at the observed DoFs (from precomputed
+// O K_r^{-1} C_r^T) against the expansion u = V q of the whole field.
+TEST(ReducedModel, RecoveredDisplacementsMatchTheExpandedField)
+{
+  const Bodies      setup(Scene::read(source_dir + "/prm/stacked.prm"));
+  const ReportNodes report = setup.report();
+  for (const bool corrected : {false, true})
+  {
+    const Reduced         reduced(setup, corrected);
+    const ContactSolution s = reduced.exact(setup);
+    const ContactState    state =
+      ActiveSetSolver().solve(reduced.model->problem(), 1, 1, "test");
+    const std::vector<Vector<double>> q =
+      reduced.model->coordinates(state.p, 1);
+    Vector<double> u0, u1;
+    reduced.components[0]->expand(q[0], u0);
+    reduced.components[1]->expand(q[1], u1);
+    EXPECT_NEAR(s.slave_displacement[0], u0[report.slave.dofs[0]], 1e-12);
+    EXPECT_NEAR(s.slave_displacement[1], u0[report.slave.dofs[1]], 1e-12);
+    EXPECT_NEAR(s.master_displacements[1][1],
+                u1[report.master[1].dofs[1]],
+                1e-12);
+    // and V^T K V is K_r: the expansion of a unit coordinate has the
+    // reduced stiffness as its energy.
+    Vector<double> e(reduced.components[1]->size()), v, Kv(u1.size());
+    e[reduced.components[1]->size() - 1] = 1;
+    reduced.components[1]->expand(e, v);
+    setup.components[1]->stiffness_matrix().vmult(Kv, v);
+    const auto &Kr = reduced.components[1]->stiffness();
+    EXPECT_NEAR(v * Kv,
+                Kr(Kr.m() - 1, Kr.m() - 1),
+                1e-8 * Kr(Kr.m() - 1, Kr.m() - 1));
+  }
+}
+
+TEST(ReducedModel, ModeCountFromAStaticErrorTolerance)
+{
+  const Bodies    setup(Scene::read(source_dir + "/prm/overlap.prm"));
+  ModalParameters parameters;
+  parameters.n_modes  = 20;
+  const Component &P1 = *setup.components[0];
+  const ModalBasis basis =
+    ModalSolver(parameters)
+      .solve(P1.stiffness_matrix(), P1.mass_matrix(), "P1");
+  const Vector<double> &f = P1.load_vector();
+  SparseDirectSolver    inverse;
+  inverse.factorize(P1.stiffness_matrix());
+  Vector<double> u = f;
+  inverse.solve(u);
+  // The error of n modes, computed directly from u_n = sum_j phi_j (phi_j^T
+  // f) / lambda_j in the energy norm.
+  const auto error = [&](const unsigned int n)
+  {
+    Vector<double> un(u.size()), d(u.size()), Kd(u.size());
+    for (unsigned int j = 0; j < n; ++j)
+      un.add((basis.modes[j] * f) / basis.eigenvalues[j], basis.modes[j]);
+    d = u;
+    d -= un;
+    P1.stiffness_matrix().vmult(Kd, d);
+    return std::sqrt((d * Kd) / (u * f));
+  };
+  const unsigned int n = modes_for_static_error(basis, f, u, 0.01, "P1");
+  EXPECT_LE(error(n), 0.01 * (1 + 1e-6));
+  EXPECT_GT(error(n - 1), 0.01);
+  EXPECT_NE(error_of(
+              [&]()
+              {
+                modes_for_static_error(basis, f, u, 1e-9, "P1");
+              })
+              .find("P1: 20 modes leave a static error"),
+            std::string::npos);
+}
+
+
+// ----------------------------------------------------------------------------
+// The solvers against each other
+// ----------------------------------------------------------------------------
+
+// reduced_exact (corrected) is the full-order problem: 1e-7. FL2C on the
+// corrected model: the issue's targets, F_n within 0.1 % and the slave
+// displacement within 0.5 %, met on `overlap`. On `stacked` the F_n target
+// is NOT met (measured 0.3-0.5 % on the 1.5k to 20k meshes, doc/contact.md):
+// FL2C stops (tolerance 1e-4) with the tip force spread over more nodes than
+// the exact answer; the gaps hardly depend on that spread (weakly
+// complementary interface), the sum of the forces does. The test bounds F_n
+// there by 1 % to catch regressions, not to claim the target. FL2C on modes
+// against the exact solution on the same modes (the regulator error alone):
+// the same bounds.
+TEST(Solvers, AgreeOnBothScenesWithAndWithoutFriction)
+{
+  for (const std::string name : {"overlap", "stacked"})
+  {
+    Bodies  setup(Scene::read(source_dir + "/prm/" + name + ".prm"));
+    Reduced corrected(setup, true), modes(setup, false);
+    for (const double mu : {0., 0.3})
+    {
+      setup.interface->set_friction_coefficient(mu);
+      corrected.model->problem().set_friction_coefficient(mu);
+      modes.model->problem().set_friction_coefficient(mu);
+      const ContactSolution f     = full_order(setup);
+      const ContactSolution re    = corrected.exact(setup);
+      const ContactSolution fc    = corrected.fl2c(setup);
+      const ContactSolution rm    = modes.exact(setup);
+      const ContactSolution fm    = modes.fl2c(setup);
+      const std::string     where = name + ", mu = " + std::to_string(mu);
+      EXPECT_LE(f.residual, 1e-10) << where;
+      EXPECT_LE(re.residual, 1e-10) << where;
+      EXPECT_LE(relative(re.normal_force, f.normal_force), 1e-7) << where;
+      EXPECT_LE(relative(re.slave_displacement, f.slave_displacement), 1e-7)
+        << where;
+      const double fn_bound = (name == "overlap" ? 1e-3 : 1e-2);
+      EXPECT_LE(relative(fc.normal_force, f.normal_force), fn_bound) << where;
+      EXPECT_LE(relative(fc.slave_displacement, f.slave_displacement), 5e-3)
+        << where;
+      EXPECT_LE(relative(fm.normal_force, rm.normal_force), fn_bound) << where;
+      EXPECT_LE(relative(fm.slave_displacement, rm.slave_displacement), 5e-3)
+        << where;
+      if (mu > 0)
+      {
+        EXPECT_LE(relative(re.tangential_force, f.tangential_force), 1e-7)
+          << where;
+        EXPECT_LE(relative(fc.tangential_force, f.tangential_force), fn_bound)
+          << where;
+      }
+      else
+        EXPECT_EQ(fc.tangential_force, 0.) << where;
+    }
+  }
+}
+
+// FL2C with the paper's own transition points (Table 2: 1, 5, 10 mm -> 500,
+// 5000, 15000 N) has a small-signal gain eight times the tip's stiffness on
+// `overlap`: it oscillates, and says so instead of answering.
+TEST(FL2C, PaperTransitionPointsOscillateAndFailLoudly)
+{
+  const Bodies   setup(Scene::read(source_dir + "/prm/overlap.prm"));
+  const Reduced  modes(setup, false);
+  FL2CParameters parameters;
+  parameters.calibration    = FL2CParameters::Calibration::prm;
+  parameters.max_iterations = 500;
+  const std::string message = error_of(
+    [&]()
+    {
+      modes.fl2c(setup, 1, parameters);
+    });
+  EXPECT_NE(message.find("test: the fuzzy regulators did not converge in 500 "
+                         "iterations (load step 1); complementarity residual"),
+            std::string::npos)
+    << message;
+}
+
+
+// ----------------------------------------------------------------------------
+// Hard cases
+// ----------------------------------------------------------------------------
+
+// mu = 5 on both scenes: all solvers agree, forces inside the cone; on
+// `overlap` the tip node sticks.
+TEST(HardCases, LargeFriction)
+{
+  for (const std::string name : {"overlap", "stacked"})
+  {
+    Bodies  setup(Scene::read(source_dir + "/prm/" + name + ".prm"));
+    Reduced corrected(setup, true);
+    setup.interface->set_friction_coefficient(5);
+    corrected.model->problem().set_friction_coefficient(5);
+    const ContactSolution f  = full_order(setup);
+    const ContactSolution re = corrected.exact(setup);
+    const ContactSolution fc = corrected.fl2c(setup);
+    EXPECT_LE(f.residual, 1e-10) << name;
+    EXPECT_LE(relative(re.normal_force, f.normal_force), 1e-7) << name;
+    EXPECT_LE(relative(re.tangential_force, f.tangential_force), 1e-7) << name;
+    // (0.1 % on overlap; on stacked see Solvers.AgreeOnBothScenes...)
+    EXPECT_LE(relative(fc.normal_force, f.normal_force),
+              name == "overlap" ? 1e-3 : 1e-2)
+      << name;
+    EXPECT_LE(relative(fc.slave_displacement, f.slave_displacement), 5e-3)
+      << name;
+    for (unsigned int k = 0; k < f.n_nodes(); ++k)
+      EXPECT_LE(std::abs(f.p_t(k)), 5 * f.p_n(k) * (1 + 1e-12));
+    if (name == "overlap")
+    {
+      EXPECT_EQ(f.count(ContactStatus::stick), 1u);
+    }
+  }
+}
+
+// With an initial gap of exactly 0 the contact problem is positively
+// homogeneous in the load: the answers at F = 10 N and F = 500 kN are the
+// 50 kN answer scaled by 1/5000 and by 10, for every solver.
+TEST(HardCases, TinyAndHugeLoadsWithZeroGapScaleExactly)
+{
+  Bodies setup(
+    Scene::read_from_string(replace(scene_text("overlap"),
+                                    "set initial gap          = auto",
+                                    "set initial gap = 0")));
+  Reduced corrected(setup, true), modes(setup, false);
+  for (const ContactNode &node : setup.interface->nodes())
+    ASSERT_EQ(node.initial_gap, 0.);
+  const ContactSolution f1  = full_order(setup, 1);
+  const ContactSolution fc1 = corrected.fl2c(setup, 1);
+  const ContactSolution fm1 = modes.fl2c(setup, 1);
+  for (const double factor : {10. / 50000, 10.})
+  {
+    const ContactSolution f  = full_order(setup, factor);
+    const ContactSolution re = corrected.exact(setup, factor);
+    const ContactSolution fc = corrected.fl2c(setup, factor);
+    const ContactSolution fm = modes.fl2c(setup, factor);
+    EXPECT_NEAR(f.normal_force,
+                factor * f1.normal_force,
+                1e-9 * factor * f1.normal_force);
+    EXPECT_NEAR(f.tangential_force,
+                factor * f1.tangential_force,
+                1e-9 * factor * std::abs(f1.tangential_force));
+    EXPECT_NEAR(f.slave_displacement[1],
+                factor * f1.slave_displacement[1],
+                1e-9 * factor * std::abs(f1.slave_displacement[1]));
+    EXPECT_LE(relative(re.normal_force, f.normal_force), 1e-7);
+    // FL2C's tolerances are relative: the same relative answer.
+    EXPECT_NEAR(fc.normal_force,
+                factor * fc1.normal_force,
+                1e-6 * factor * fc1.normal_force);
+    EXPECT_NEAR(fm.normal_force,
+                factor * fm1.normal_force,
+                1e-6 * factor * fm1.normal_force);
+    EXPECT_LE(f.residual, 1e-10);
+  }
+}
+
+// An initial gap of 1e-4 m (declared) against one of 0: the same closed
+// node, a force smaller by the force that closes the gap, and the same
+// answer as a gap offset on the automatic geometry (a second route).
+TEST(HardCases, InitialGaps)
+{
+  const auto with_gap = [](const std::string &gap)
+  {
+    return Scene::read_from_string(replace(scene_text("overlap"),
+                                           "set initial gap          = auto",
+                                           "set initial gap = " + gap));
+  };
+  Bodies                zero(with_gap("0")), gap(with_gap("1e-4"));
+  Reduced               corrected(gap, true);
+  const ContactSolution f0 = full_order(zero);
+  const ContactSolution fg = full_order(gap);
+  const ContactSolution re = corrected.exact(gap);
+  const ContactSolution fc = corrected.fl2c(gap);
+  EXPECT_LT(fg.normal_force, f0.normal_force);
+  EXPECT_LE(relative(re.normal_force, fg.normal_force), 1e-7);
+  EXPECT_LE(relative(fc.normal_force, fg.normal_force), 1e-3);
+  EXPECT_LE(relative(fc.slave_displacement, fg.slave_displacement), 5e-3);
+  // One closed node k with gap closing linearly: F_n(0) - F_n(g) = g /
+  // W_kk.
+  ASSERT_EQ(f0.n_nodes() - f0.count(ContactStatus::open), 1u);
+  unsigned int k = 0;
+  while (f0.status[k] == ContactStatus::open)
+    ++k;
+  FullOrderContact full(zero.components, *zero.interface);
+  full.set_load_factor(1);
+  full.solve();
+  const FullMatrix<double> W = full.flexibility();
+  // With friction the closed node slips: the force direction is fixed, so
+  // the effective flexibility is W_nn + mu s W_nt.
+  const double mu = zero.interface->node(k).friction_coefficient;
+  const double s  = f0.p_t(k) > 0 ? 1. : -1.;
+  const double w  = W(normal_row(k), normal_row(k)) +
+                   mu * s * W(normal_row(k), tangential_row(k));
+  EXPECT_NEAR(f0.normal_force - fg.normal_force, 1e-4 / w, 1e-6 * 1e-4 / w);
+
+  Bodies offset(Scene::read(source_dir + "/prm/overlap.prm"));
+  offset.interface->set_gap_offset(1e-4 - 1e-8);
+  const ContactSolution fo = full_order(offset);
+  EXPECT_NEAR(fo.normal_force, fg.normal_force, 1e-9 * fg.normal_force);
+
+  // A gap larger than the free deflection of the tip: no contact.
+  Bodies                wide(with_gap("0.05"));
+  const ContactSolution fw = full_order(wide);
+  EXPECT_EQ(fw.normal_force, 0.);
+  EXPECT_EQ(fw.count(ContactStatus::open), fw.n_nodes());
+}
+
+// No load: zero contact force from every solver, and no NaN anywhere.
+TEST(HardCases, ZeroLoadGivesZeroForce)
+{
+  for (const std::string name : {"overlap", "stacked"})
+  {
+    const Bodies  setup(Scene::read(source_dir + "/prm/" + name + ".prm"));
+    const Reduced corrected(setup, true), modes(setup, false);
+    for (const ContactSolution &s : {full_order(setup, 0),
+                                     corrected.exact(setup, 0),
+                                     corrected.fl2c(setup, 0),
+                                     modes.fl2c(setup, 0)})
+    {
+      EXPECT_EQ(s.normal_force, 0.) << name;
+      EXPECT_EQ(s.tangential_force, 0.) << name;
+      EXPECT_EQ(s.residual, 0.) << name;
+      EXPECT_EQ(s.slave_displacement[0], 0.) << name;
+      EXPECT_EQ(s.slave_displacement[1], 0.) << name;
+      EXPECT_EQ(s.count(ContactStatus::open), s.n_nodes());
+    }
+  }
+}
+
+// Load steps: frictionless contact does not depend on the path, so 4 steps
+// give the 1-step answer; with friction, the solvers still agree step by
+// step.
+TEST(HardCases, LoadSteps)
+{
+  Bodies  setup(Scene::read(source_dir + "/prm/stacked.prm"));
+  Reduced corrected(setup, true);
+  setup.interface->set_friction_coefficient(0);
+  corrected.model->problem().set_friction_coefficient(0);
+  const ContactSolution one  = full_order(setup, 1, 1);
+  const ContactSolution four = full_order(setup, 1, 4);
+  EXPECT_NEAR(four.normal_force, one.normal_force, 1e-9 * one.normal_force);
+  EXPECT_EQ(four.n_load_steps, 4u);
+
+  setup.interface->set_friction_coefficient(0.3);
+  corrected.model->problem().set_friction_coefficient(0.3);
+  const ContactSolution f  = full_order(setup, 1, 4);
+  const ContactSolution re = corrected.exact(setup, 1, 4);
+  const ContactSolution fc = corrected.fl2c(setup, 1, FL2CParameters(), 4);
+  EXPECT_LE(relative(re.normal_force, f.normal_force), 1e-7);
+  EXPECT_LE(relative(re.tangential_force, f.tangential_force), 1e-7);
+  // stacked: 1 %, not the 0.1 % target (see Solvers.AgreeOnBothScenes...).
+  EXPECT_LE(relative(fc.normal_force, f.normal_force), 1e-2);
+  EXPECT_LE(f.residual, 1e-10);
+}

@@ -1,0 +1,64 @@
+## Tests of the contact part (issue 4): one GoogleTest binary and the
+## program runs of step-3 (a good run with acceptance checks on
+## results.json, and bad input that must fail with a message and write
+## nothing). The step-3 runs use the 1510-DoF meshes (mesh refinements = 0).
+
+fuzzycontact_gtest(contact)
+
+set(step3_coarse "-DEDIT2_FILE=step"
+  "-DEDIT2_FROM=set mesh refinements        = 2"
+  "-DEDIT2_TO=set mesh refinements        = 0")
+
+fuzzycontact_program_test(step-3.default_run step-3 overlap
+  -DEXPECT=success
+  -DEXTRA_SCENES=${CMAKE_SOURCE_DIR}/prm/stacked.prm
+  ${step3_coarse}
+  -DJSON_CHECKS=${CMAKE_CURRENT_SOURCE_DIR}/check_step-3.cmake)
+
+# A load of zero is no error: zero contact force, not NaN.
+fuzzycontact_program_test(step-3.zero_load step-3 overlap
+  -DEXPECT=success
+  -DEXTRA_SCENES=${CMAKE_SOURCE_DIR}/prm/stacked.prm
+  ${step3_coarse}
+  -DEDIT_FILE=step
+  "-DEDIT_FROM=set load                    = 50000"
+  "-DEDIT_TO=set load = 0"
+  -DJSON_CHECKS=${CMAKE_CURRENT_SOURCE_DIR}/check_step-3_zero_load.cmake)
+
+# Each case edits one line of prm/step-3.prm (step) or prm/overlap.prm
+# (scene).
+set(step3_bad_inputs
+  "faces_cannot_touch|scene|set master face          = top|set master face = bottom|Contact interface: the slave face \\(P1 bottom\\) and the master face \\(P2 bottom\\) cannot touch"
+  "faces_apart|scene|set lower left corner  = 0.1, -0.008|set lower left corner  = 0.25, -0.008|Contact interface: no node of the slave face \\(P1 bottom\\) lies opposite the master face \\(P2 top\\)"
+  "negative_friction_in_step|step|set friction coefficients   = 0, 0.3|set friction coefficients = 0, -0.3|friction coefficients: each value must not be negative, got -0.3"
+  "negative_friction_in_scene|scene|set friction coefficient = 0.3|set friction coefficient = -0.3|Contact interface: friction coefficient must not be negative"
+  "initial_penetration|scene|set initial gap          = auto|set initial gap = -1e-3|Contact interface: initial penetration of 0.001 m at the slave node"
+  "transition_points_out_of_order|step|set gap points      = 1e-3, 5e-3, 1e-2|set gap points = 5e-3, 1e-3, 1e-2|FL2C: gap points / force points: the input transition points must satisfy 0 < p1 < p2 < p3, got 0.005, 0.001, 0.01"
+  "malformed_friction_list|step|set friction coefficients   = 0, 0.3|set friction coefficients = 0, x|friction coefficients: <x> is not a number")
+foreach(case ${step3_bad_inputs})
+  string(REPLACE "|" ";" fields "${case}")
+  list(GET fields 0 name)
+  list(GET fields 1 file)
+  list(GET fields 2 from)
+  list(GET fields 3 to)
+  list(GET fields 4 message)
+  fuzzycontact_program_test(step-3.bad_input.${name} step-3 overlap
+    -DEXPECT=failure
+    -DEXTRA_SCENES=${CMAKE_SOURCE_DIR}/prm/stacked.prm
+    -DEDIT_FILE=${file}
+    "-DEDIT_FROM=${from}"
+    "-DEDIT_TO=${to}"
+    "-DMESSAGE=${message}")
+endforeach()
+
+# FL2C with the paper's transition points oscillates on this scene: it must
+# say so and stop, not answer.
+fuzzycontact_program_test(step-3.bad_input.regulator_does_not_converge
+  step-3 overlap
+  -DEXPECT=failure
+  -DEXTRA_SCENES=${CMAKE_SOURCE_DIR}/prm/stacked.prm
+  ${step3_coarse}
+  -DEDIT_FILE=step
+  "-DEDIT_FROM=set calibration     = automatic"
+  "-DEDIT_TO=set calibration = prm"
+  "-DMESSAGE=fl2c_modes: the fuzzy regulators did not converge in 20000 iterations \\(load step 1\\); complementarity residual")
