@@ -149,6 +149,33 @@ namespace FuzzyContact
     }
 
 
+    void
+    parse_in_passes(const std::string                             &text,
+                    const std::string                             &source_name,
+                    const std::function<void(ParameterHandler &)> &declare,
+                    const std::function<bool(ParameterHandler &)> &learn_names,
+                    const std::function<void(ParameterHandler &)> &parse)
+    {
+      // Each pass can only learn the names one level deeper, so a handful
+      // of passes settles any sensible file.
+      for (unsigned int pass = 0; pass < 8; ++pass)
+      {
+        ParameterHandler   prm;
+        std::istringstream in(text);
+        declare(prm);
+        prm.parse_input(in, source_name, "", /*skip_undefined=*/true);
+        if (!learn_names(prm))
+          break;
+      }
+      ParameterHandler   prm;
+      std::istringstream in(text);
+      declare(prm);
+      prm.parse_input(in, source_name, "", /*skip_undefined=*/false);
+      prm.assert_that_entries_have_been_set();
+      parse(prm);
+    }
+
+
     std::string
     message_of(const ExceptionBase &exception)
     {

@@ -285,6 +285,26 @@ namespace FuzzyContact
   }
 
 
+  std::string
+  Scene::names_signature() const
+  {
+    std::string signature;
+    for (const ComponentDescription &c : components)
+    {
+      signature += c.name + "(";
+      for (const MaterialZone &z : c.zones)
+        signature += z.name + ",";
+      signature += ";";
+      for (const EdgeLoad &l : c.loads)
+        signature += l.name + ",";
+      signature += ")";
+    }
+    for (const ContactPairDescription &p : contact_pairs)
+      signature += p.name + ",";
+    return signature;
+  }
+
+
   void
   Scene::parse_names(ParameterHandler &prm)
   {
@@ -541,26 +561,27 @@ namespace FuzzyContact
   Scene::read_from_string(const std::string &text,
                           const std::string &source_name)
   {
-    // Pass 1 learns the component and contact pair names, pass 2 the zone
-    // and load names of each component; both skip what they do not know
-    // yet. The last pass declares everything and is strict.
+    // The first pass learns the component and contact pair names, the
+    // second the zone and load names of each component; the last one is
+    // strict.
     Scene scene;
-    for (unsigned int pass = 0; pass < 2; ++pass)
-    {
-      ParameterHandler prm;
-      scene.declare_parameters(prm);
-      std::istringstream in(text);
-      prm.parse_input(in, source_name, "", /*skip_undefined=*/true);
-      scene.parse_names(prm);
-    }
-    // Declare the zone subsections (parse_names() created the zones with
-    // their names only).
-    ParameterHandler prm;
-    scene.declare_parameters(prm);
-    std::istringstream in(text);
-    prm.parse_input(in, source_name, "", /*skip_undefined=*/false);
-    prm.assert_that_entries_have_been_set();
-    scene.parse_parameters(prm);
+    Input::parse_in_passes(
+      text,
+      source_name,
+      [&](ParameterHandler &prm)
+      {
+        scene.declare_parameters(prm);
+      },
+      [&](ParameterHandler &prm)
+      {
+        const std::string before = scene.names_signature();
+        scene.parse_names(prm);
+        return scene.names_signature() != before;
+      },
+      [&](ParameterHandler &prm)
+      {
+        scene.parse_parameters(prm);
+      });
     return scene;
   }
 

@@ -8,6 +8,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -71,6 +72,22 @@ namespace FuzzyContact
      */
     void
     parse_strictly(ParameterHandler &prm, const std::string &filename);
+
+    /**
+     * Parses a parameter file whose subsections depend on names listed in
+     * it (components, zones, fuzzy parameters, ...). Each pass declares what
+     * @p declare knows so far into a fresh ParameterHandler and parses
+     * @p text skipping the rest; @p learn_names reads the name lists and
+     * returns true if they changed. When nothing changes any more, a last
+     * pass declares everything and parses strictly (unknown keys, malformed
+     * values and missing mandatory entries throw), and @p parse reads it.
+     */
+    void
+    parse_in_passes(const std::string                             &text,
+                    const std::string                             &source_name,
+                    const std::function<void(ParameterHandler &)> &declare,
+                    const std::function<bool(ParameterHandler &)> &learn_names,
+                    const std::function<void(ParameterHandler &)> &parse);
 
     /**
      * The user-facing text of a deal.II exception: its "additional

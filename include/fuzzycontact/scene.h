@@ -209,6 +209,10 @@ namespace FuzzyContact
     void
     parse_names(ParameterHandler &prm);
 
+    /** All names (components, zones, loads, pairs) in one string. */
+    std::string
+    names_signature() const;
+
     /** Checks what can be checked without a mesh. */
     void
     check() const;

@@ -1,0 +1,286 @@
+#include <fuzzycontact/interval_analysis.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/timer.h>
+
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+
+namespace FuzzyContact
+{
+  EvaluationCache::EvaluationCache(const Response &response)
+      : response(response)
+  {
+  }
+
+  const std::vector<double> &
+  EvaluationCache::operator()(const std::vector<double> &parameters)
+  {
+    const auto found = values.find(parameters);
+    if (found != values.end())
+      return found->second;
+    return values.emplace(parameters, response(parameters)).first->second;
+  }
+
+  unsigned long
+  EvaluationCache::n_evaluations() const
+  {
+    return values.size();
+  }
+
+
+  std::vector<Interval>
+  alpha_box(const std::vector<FuzzyNumber> &parameters, const double alpha)
+  {
+    std::vector<Interval> box;
+    for (const FuzzyNumber &p : parameters)
+      box.push_back(p.alpha_cut(alpha));
+    return box;
+  }
+
+
+  double
+  max_relative_difference(const std::vector<Interval> &bounds,
+                          const std::vector<Interval> &reference,
+                          const double                 floor)
+  {
+    AssertThrow(bounds.size() == reference.size(),
+                ExcMessage("Bounds to compare must have the same levels."));
+    double worst = 0;
+    for (unsigned int l = 0; l < bounds.size(); ++l)
+      for (const auto &[b, r] :
+           {std::make_pair(bounds[l].lower, reference[l].lower),
+            std::make_pair(bounds[l].upper, reference[l].upper)})
+        worst = std::max(worst, std::abs(b - r) / std::max(std::abs(r), floor));
+    return worst;
+  }
+
+
+  namespace
+  {
+    unsigned int
+    n_ranks(const MPI_Comm comm)
+    {
+      return Utilities::MPI::job_supports_mpi()
+               ? Utilities::MPI::n_mpi_processes(comm)
+               : 1;
+    }
+
+    unsigned int
+    this_rank(const MPI_Comm comm)
+    {
+      return Utilities::MPI::job_supports_mpi()
+               ? Utilities::MPI::this_mpi_process(comm)
+               : 0;
+    }
+
+    // Evaluates the points assigned to this rank (every n-th, round robin)
+    // and gives every rank the outputs of all points.
+    std::vector<std::vector<double>>
+    evaluate_distributed(const std::vector<std::vector<double>> &points,
+                         const Response                         &response,
+                         const MPI_Comm                          comm)
+    {
+      const unsigned int size = n_ranks(comm), rank = this_rank(comm);
+      std::vector<std::pair<unsigned long, std::vector<double>>> mine;
+      for (unsigned long i = rank; i < points.size(); i += size)
+        mine.emplace_back(i, response(points[i]));
+      std::vector<std::vector<double>> outputs(points.size());
+      if (size == 1)
+        for (auto &[i, out] : mine)
+          outputs[i] = std::move(out);
+      else
+        for (auto &part : Utilities::MPI::all_gather(comm, mine))
+          for (auto &[i, out] : part)
+            outputs[i] = std::move(out);
+      return outputs;
+    }
+
+    // Min and max of each output over the points inside each box.
+    FuzzyOutputBounds
+    bounds_over_points(const std::vector<FuzzyNumber>         &parameters,
+                       const std::vector<double>              &alpha,
+                       const std::vector<std::vector<double>> &points,
+                       const std::vector<std::vector<double>> &outputs,
+                       const unsigned int                      n_outputs)
+    {
+      FuzzyOutputBounds result;
+      result.alpha = alpha;
+      result.bounds.assign(n_outputs, std::vector<Interval>(alpha.size()));
+      result.argmin.assign(n_outputs,
+                           std::vector<std::vector<double>>(alpha.size()));
+      result.argmax = result.argmin;
+      for (unsigned int l = 0; l < alpha.size(); ++l)
+      {
+        const std::vector<Interval> box = alpha_box(parameters, alpha[l]);
+        for (unsigned int k = 0; k < n_outputs; ++k)
+          result.bounds[k][l] = {std::numeric_limits<double>::infinity(),
+                                 -std::numeric_limits<double>::infinity()};
+        bool any = false;
+        for (unsigned long i = 0; i < points.size(); ++i)
+        {
+          bool inside = true;
+          for (unsigned int d = 0; d < box.size() && inside; ++d)
+            inside = box[d].contains(points[i][d],
+                                     1e-12 * (box[d].width() +
+                                              std::abs(box[d].lower)));
+          if (!inside)
+            continue;
+          any = true;
+          AssertThrow(outputs[i].size() == n_outputs,
+                      ExcMessage("The response returned " +
+                                 std::to_string(outputs[i].size()) +
+                                 " outputs instead of " +
+                                 std::to_string(n_outputs) + "."));
+          for (unsigned int k = 0; k < n_outputs; ++k)
+          {
+            const double v = outputs[i][k];
+            AssertThrow(std::isfinite(v),
+                        ExcMessage("The response returned a non-finite "
+                                   "value."));
+            if (v < result.bounds[k][l].lower)
+            {
+              result.bounds[k][l].lower = v;
+              result.argmin[k][l]       = points[i];
+            }
+            if (v > result.bounds[k][l].upper)
+            {
+              result.bounds[k][l].upper = v;
+              result.argmax[k][l]       = points[i];
+            }
+          }
+        }
+        Assert(any, ExcInternalError());
+        (void)any;
+      }
+      return result;
+    }
+
+    // Keeps each distinct point once, in the order first seen.
+    void
+    add_unique(std::vector<std::vector<double>> &points,
+               std::set<std::vector<double>>    &seen,
+               const std::vector<double>        &p)
+    {
+      if (seen.insert(p).second)
+        points.push_back(p);
+    }
+
+    // The per-parameter grid of the Extension Principle.
+    std::vector<std::vector<double>>
+    sampling_grid(const std::vector<FuzzyNumber> &parameters,
+                  const std::vector<double>      &alpha,
+                  const unsigned int              extra)
+    {
+      std::vector<std::vector<double>> grid;
+      for (const FuzzyNumber &p : parameters)
+      {
+        std::set<double> ends;
+        for (const double a : alpha)
+        {
+          const Interval cut = p.alpha_cut(a);
+          ends.insert(cut.lower);
+          ends.insert(cut.upper);
+        }
+        std::vector<double> g;
+        for (auto it = ends.begin(); it != ends.end(); ++it)
+        {
+          g.push_back(*it);
+          const auto next = std::next(it);
+          if (next != ends.end())
+            for (unsigned int e = 1; e <= extra; ++e)
+              g.push_back(*it + (*next - *it) * e / (extra + 1.));
+        }
+        grid.push_back(g);
+      }
+      return grid;
+    }
+  } // namespace
+
+
+  FuzzyOutputBounds
+  vertex_method(const std::vector<FuzzyNumber> &parameters,
+                const std::vector<double>      &alpha,
+                const Response                 &response,
+                const unsigned int              n_outputs,
+                const MPI_Comm                  comm)
+  {
+    Timer                            timer;
+    const unsigned int               n = parameters.size();
+    std::vector<std::vector<double>> points;
+    std::set<std::vector<double>>    seen;
+    for (const double a : alpha)
+    {
+      const std::vector<Interval> box = alpha_box(parameters, a);
+      for (unsigned long corner = 0; corner < (1ul << n); ++corner)
+      {
+        std::vector<double> p(n);
+        for (unsigned int d = 0; d < n; ++d)
+          p[d] = (corner >> d) & 1 ? box[d].upper : box[d].lower;
+        add_unique(points, seen, p);
+      }
+    }
+    const auto        outputs = evaluate_distributed(points, response, comm);
+    FuzzyOutputBounds result =
+      bounds_over_points(parameters, alpha, points, outputs, n_outputs);
+    result.n_evaluations = points.size();
+    result.wall_time     = timer.wall_time();
+    if (n_ranks(comm) > 1)
+      result.wall_time = Utilities::MPI::max(result.wall_time, comm);
+    return result;
+  }
+
+
+  unsigned long
+  extension_principle_size(const std::vector<FuzzyNumber> &parameters,
+                           const std::vector<double>      &alpha,
+                           const unsigned int              extra)
+  {
+    unsigned long n = 1;
+    for (const auto &g : sampling_grid(parameters, alpha, extra))
+      n *= g.size();
+    return n;
+  }
+
+
+  FuzzyOutputBounds
+  extension_principle(const std::vector<FuzzyNumber> &parameters,
+                      const std::vector<double>      &alpha,
+                      const Response                 &response,
+                      const unsigned int              n_outputs,
+                      const unsigned int              extra,
+                      const MPI_Comm                  comm)
+  {
+    Timer      timer;
+    const auto grid = sampling_grid(parameters, alpha, extra);
+    std::vector<std::vector<double>> points;
+    unsigned long                    total = 1;
+    for (const auto &g : grid)
+      total *= g.size();
+    points.reserve(total);
+    for (unsigned long i = 0; i < total; ++i)
+    {
+      std::vector<double> p(grid.size());
+      unsigned long       rest = i;
+      for (unsigned int d = 0; d < grid.size(); ++d)
+      {
+        p[d] = grid[d][rest % grid[d].size()];
+        rest /= grid[d].size();
+      }
+      points.push_back(std::move(p));
+    }
+    const auto        outputs = evaluate_distributed(points, response, comm);
+    FuzzyOutputBounds result =
+      bounds_over_points(parameters, alpha, points, outputs, n_outputs);
+    result.n_evaluations = points.size();
+    result.wall_time     = timer.wall_time();
+    if (n_ranks(comm) > 1)
+      result.wall_time = Utilities::MPI::max(result.wall_time, comm);
+    return result;
+  }
+} // namespace FuzzyContact
