@@ -582,4 +582,16 @@ namespace FuzzyContact
     AssertIndexRange(pair, penetration_tolerance_.size());
     return penetration_tolerance_[pair];
   }
+  unsigned int
+  ContactInterface::report_node() const
+  {
+    AssertThrow(n_nodes() > 0,
+                ExcMessage("The contact interface has no slave node."));
+    unsigned int slave = 0;
+    for (unsigned int k = 1; k < n_nodes(); ++k)
+      if (node(k).tangent * node(k).slave.position >
+          node(slave).tangent * node(slave).slave.position)
+        slave = k;
+    return slave;
+  }
 } // namespace FuzzyContact

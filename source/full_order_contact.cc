@@ -3,6 +3,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/timer.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace FuzzyContact
@@ -79,6 +80,55 @@ namespace FuzzyContact
     warm_start_ = warm_start;
   }
 
+  void
+  FullOrderContact::set_displacement_fields(const bool fields)
+  {
+    displacement_fields_ = fields;
+  }
+
+
+  void
+  FullOrderContact::observe(const ReportNodes &report)
+  {
+    std::vector<std::vector<types::global_dof_index>> dofs(components.size());
+    for (const FaceNode *node :
+         {&report.slave, &report.master[0], &report.master[1]})
+      for (unsigned int d = 0; d < 2; ++d)
+        dofs[node->component].push_back(node->dofs[d]);
+    if (dofs == observed_dofs)
+      return;
+    // Columns computed for other DoFs would lack the values at these.
+    observed_dofs = dofs;
+    for (Factorized &F : factorized)
+    {
+      F.columns.clear();
+      F.columns.resize(interface.n_rows());
+      F.observed_columns.clear();
+      F.observed_columns.resize(interface.n_rows());
+    }
+    columns.clear();
+    columns.resize(interface.n_rows());
+  }
+
+
+  double
+  FullOrderContact::observed_displacement(const unsigned int            c,
+                                          const types::global_dof_index dof,
+                                          const Vector<double>         &p)
+  {
+    const Factorized &F = factorized[c];
+    const auto        position =
+      std::find(observed_dofs[c].begin(), observed_dofs[c].end(), dof) -
+      observed_dofs[c].begin();
+    Assert(position < static_cast<long>(observed_dofs[c].size()),
+           ExcInternalError());
+    double u = load_factor_ * F.free_solution[dof];
+    for (unsigned int j = 0; j < p.size(); ++j)
+      if (p[j] != 0 && !F.observed_columns[j].empty())
+        u += p[j] * F.observed_columns[j][position];
+    return u / F.scale;
+  }
+
 
   void
   FullOrderContact::update_factorizations()
@@ -115,6 +165,8 @@ namespace FuzzyContact
       ++back_substitutions;
       F.columns.clear();
       F.columns.resize(m);
+      F.observed_columns.clear();
+      F.observed_columns.resize(m);
       scale_changed = true;
     }
     if (scale_changed || columns.size() != m)
@@ -148,6 +200,12 @@ namespace FuzzyContact
         ++back_substitutions;
         F.columns[j] = std::make_unique<Vector<double>>(m);
         C.vmult(*F.columns[j], z);
+        if (c < observed_dofs.size() && !observed_dofs[c].empty())
+        {
+          F.observed_columns[j].clear();
+          for (const types::global_dof_index dof : observed_dofs[c])
+            F.observed_columns[j].push_back(z[dof]);
+        }
       }
       sum->add(1. / F.scale, *F.columns[j]);
     }
@@ -199,6 +257,8 @@ namespace FuzzyContact
   {
     Timer timer;
     update_factorizations();
+    if (report != nullptr)
+      observe(*report);
 
     const Vector<double>      g_initial = interface.initial_gaps();
     const Vector<double>      g_load    = load_gaps();
@@ -220,6 +280,41 @@ namespace FuzzyContact
         return solver.solve(W, start, mu, "full-order contact solver");
       });
     last_state = state;
+
+    if (!displacement_fields_)
+    {
+      // Forces and residual from the active set solution on W; the report's
+      // displacements from the free solutions and the kept columns.
+      ContactSolution solution;
+      solution.solver       = "full_order";
+      solution.iterations   = state.iterations;
+      solution.n_load_steps = n_load_steps_;
+      solution.p            = state.p;
+      solution.g            = state.g;
+      solution.status       = state.status;
+      solution.residual     = state.residual;
+      if (report != nullptr)
+      {
+        for (unsigned int j = 0; j < state.p.size(); ++j)
+          if (state.p[j] != 0)
+            prepare_column(j);
+        for (unsigned int d = 0; d < 2; ++d)
+        {
+          solution.slave_displacement[d] =
+            observed_displacement(report->slave.component,
+                                  report->slave.dofs[d],
+                                  state.p);
+          for (unsigned int i = 0; i < 2; ++i)
+            solution.master_displacements[i][d] =
+              observed_displacement(report->master[i].component,
+                                    report->master[i].dofs[d],
+                                    state.p);
+        }
+      }
+      solution.compute_totals();
+      solution.time = timer.wall_time();
+      return solution;
+    }
 
     // Displacements u_c = K_c^{-1} (lambda f_c + C_c^T p), and the residual
     // of their own gaps g0 + C u. The columns of W carry the error of a

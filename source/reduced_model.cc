@@ -378,70 +378,124 @@ namespace FuzzyContact
     const Vector<double>                 &g_initial,
     const std::vector<double>            &mu)
       : components(std::move(components_))
+      , scales(components.size(), 1.)
+      , factors(components.size())
+      , flexibilities(components.size())
+      , load_gaps(components.size())
+      , observation_flexibility(components.size())
+      , observation_load(components.size())
   {
     const unsigned int m = g_initial.size();
     AssertThrow(mu.size() * 2 == m,
                 ExcMessage("ReducedContactModel: 2 gap rows per friction "
                            "coefficient are expected."));
-    problem_.W.reinit(m, m);
     problem_.g_initial = g_initial;
+    problem_.mu        = mu;
+    for (unsigned int c = 0; c < components.size(); ++c)
+      compute_blocks(c);
+    assemble_problem();
+  }
+
+
+  void
+  ReducedContactModel::compute_blocks(const unsigned int c)
+  {
+    const unsigned int              m = problem_.g_initial.size();
+    const ReducedComponentMatrices &r = components[c];
+    const unsigned int              k = r.stiffness.m();
+    AssertThrow(r.stiffness.n() == k && r.gap_operator.m() == m &&
+                  r.gap_operator.n() == k && r.load.size() == k &&
+                  r.observation.m() == r.observed_dofs.size() &&
+                  (r.observed_dofs.empty() || r.observation.n() == k),
+                ExcMessage("ReducedContactModel: the reduced matrices of "
+                           "component " +
+                           std::to_string(c) + " do not fit together."));
+    // (Kept behind a pointer: copying a LAPACKFullMatrix forgets that it
+    // holds a factorisation.)
+    auto factor_pointer = std::make_unique<LAPACKFullMatrix<double>>(k, k);
+    LAPACKFullMatrix<double> &factor = *factor_pointer;
+    factor                           = r.stiffness;
+    factor.set_property(LAPACKSupport::symmetric);
+    factor.compute_cholesky_factorization();
+
+    // Y = K_r^{-1} C_r^T, W_c = C_r Y, g_load,c = C_r K_r^{-1} f_r.
+    LAPACKFullMatrix<double> Y(k, m);
+    for (unsigned int i = 0; i < k; ++i)
+      for (unsigned int j = 0; j < m; ++j)
+        Y(i, j) = r.gap_operator(j, i);
+    factor.solve(Y);
+    FullMatrix<double> Yf(k, m), Wc(m, m);
+    for (unsigned int i = 0; i < k; ++i)
+      for (unsigned int j = 0; j < m; ++j)
+        Yf(i, j) = Y(i, j);
+    r.gap_operator.mmult(Wc, Yf);
+    for (unsigned int i = 0; i < m; ++i)
+      for (unsigned int j = 0; j < i; ++j)
+        Wc(i, j) = Wc(j, i) = 0.5 * (Wc(i, j) + Wc(j, i));
+    flexibilities[c] = std::move(Wc);
+
+    Vector<double> q = r.load;
+    factor.solve(q);
+    load_gaps[c].reinit(m);
+    r.gap_operator.vmult(load_gaps[c], q);
+
+    // Recovery of the observed displacements without a reduced solve:
+    // u_obs = lambda O K_r^{-1} f_r + (O K_r^{-1} C_r^T) p.
+    const unsigned int n_obs = r.observed_dofs.size();
+    FullMatrix<double> OY(n_obs, m);
+    Vector<double>     Oq(n_obs);
+    if (n_obs > 0)
+    {
+      r.observation.mmult(OY, Yf);
+      r.observation.vmult(Oq, q);
+    }
+    observation_flexibility[c] = std::move(OY);
+    observation_load[c]        = std::move(Oq);
+    factors[c]                 = std::move(factor_pointer);
+  }
+
+
+  void
+  ReducedContactModel::assemble_problem()
+  {
+    const unsigned int m = problem_.g_initial.size();
+    problem_.W.reinit(m, m);
     problem_.g_load.reinit(m);
-    problem_.mu = mu;
     for (unsigned int c = 0; c < components.size(); ++c)
     {
-      const ReducedComponentMatrices &r = components[c];
-      const unsigned int              k = r.stiffness.m();
-      AssertThrow(r.stiffness.n() == k && r.gap_operator.m() == m &&
-                    r.gap_operator.n() == k && r.load.size() == k &&
-                    r.observation.m() == r.observed_dofs.size() &&
-                    (r.observed_dofs.empty() || r.observation.n() == k),
-                  ExcMessage("ReducedContactModel: the reduced matrices of "
-                             "component " +
-                             std::to_string(c) + " do not fit together."));
-      // (Kept behind a pointer: copying a LAPACKFullMatrix forgets that it
-      // holds a factorisation.)
-      auto factor_pointer = std::make_unique<LAPACKFullMatrix<double>>(k, k);
-      LAPACKFullMatrix<double> &factor = *factor_pointer;
-      factor                           = r.stiffness;
-      factor.set_property(LAPACKSupport::symmetric);
-      factor.compute_cholesky_factorization();
-
-      // Y = K_r^{-1} C_r^T, W_c = C_r Y, g_load += C_r K_r^{-1} f_r.
-      LAPACKFullMatrix<double> Y(k, m);
-      for (unsigned int i = 0; i < k; ++i)
-        for (unsigned int j = 0; j < m; ++j)
-          Y(i, j) = r.gap_operator(j, i);
-      factor.solve(Y);
-      FullMatrix<double> Yf(k, m), Wc(m, m);
-      for (unsigned int i = 0; i < k; ++i)
-        for (unsigned int j = 0; j < m; ++j)
-          Yf(i, j) = Y(i, j);
-      r.gap_operator.mmult(Wc, Yf);
-      for (unsigned int i = 0; i < m; ++i)
-        for (unsigned int j = 0; j < i; ++j)
-          Wc(i, j) = Wc(j, i) = 0.5 * (Wc(i, j) + Wc(j, i));
-      problem_.W.add(1., Wc);
-      flexibilities.push_back(std::move(Wc));
-
-      Vector<double> q = r.load;
-      factor.solve(q);
-      r.gap_operator.vmult_add(problem_.g_load, q);
-
-      // Recovery of the observed displacements without a reduced solve:
-      // u_obs = lambda O K_r^{-1} f_r + (O K_r^{-1} C_r^T) p.
-      const unsigned int n_obs = r.observed_dofs.size();
-      FullMatrix<double> OY(n_obs, m);
-      Vector<double>     Oq(n_obs);
-      if (n_obs > 0)
-      {
-        r.observation.mmult(OY, Yf);
-        r.observation.vmult(Oq, q);
-      }
-      observation_flexibility.push_back(std::move(OY));
-      observation_load.push_back(std::move(Oq));
-      factors.push_back(std::move(factor_pointer));
+      problem_.W.add(1. / scales[c], flexibilities[c]);
+      problem_.g_load.add(1. / scales[c], load_gaps[c]);
     }
     problem_.check();
+  }
+
+
+  void
+  ReducedContactModel::set_stiffness_scales(const std::vector<double> &s)
+  {
+    AssertThrow(s.size() == components.size(),
+                ExcMessage("ReducedContactModel: one stiffness scale per "
+                           "component is expected."));
+    for (const double x : s)
+      AssertThrow(x > 0 && std::isfinite(x),
+                  ExcMessage("ReducedContactModel: stiffness scales must be "
+                             "positive."));
+    if (s == scales)
+      return;
+    scales = s;
+    assemble_problem();
+  }
+
+
+  void
+  ReducedContactModel::replace_component(const unsigned int       c,
+                                         ReducedComponentMatrices matrices)
+  {
+    AssertIndexRange(c, components.size());
+    components[c] = std::move(matrices);
+    scales[c]     = 1.;
+    compute_blocks(c);
+    assemble_problem();
   }
 
 
@@ -482,6 +536,7 @@ namespace FuzzyContact
       rhs *= load_factor;
       components[c].gap_operator.Tvmult_add(rhs, p);
       factors[c]->solve(rhs);
+      rhs /= scales[c];
       q.push_back(std::move(rhs));
     }
     return q;
@@ -519,7 +574,7 @@ namespace FuzzyContact
         for (unsigned int j = 0; j < state.p.size(); ++j)
           if (state.p[j] != 0)
             u += OY(row, j) * state.p[j];
-        return u;
+        return u / scales[node.component];
       };
       for (unsigned int d = 0; d < 2; ++d)
       {

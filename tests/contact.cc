@@ -91,13 +91,7 @@ namespace
     ReportNodes
     report() const
     {
-      unsigned int best = 0;
-      for (unsigned int k = 1; k < interface->n_nodes(); ++k)
-        if (interface->node(k).tangent * interface->node(k).slave.position >
-            interface->node(best).tangent *
-              interface->node(best).slave.position)
-          best = k;
-      return interface->report_nodes(best);
+      return interface->report_nodes(interface->report_node());
     }
 
     std::vector<std::vector<types::global_dof_index>>
@@ -973,6 +967,54 @@ TEST(FullOrderContact, WarmStartGivesTheSameAnswer)
   EXPECT_GT(warm.normal_force, cold.normal_force);
 }
 
+// Without displacement fields (the Extension Principle's mode) the forces and
+// the report's displacements come from the columns of W and agree with the
+// refined displacement fields, on both scenes, with friction, after a change
+// of the moduli and of the load.
+TEST(FullOrderContact, OutputsWithoutDisplacementFieldsAgree)
+{
+  for (const std::string name : {"overlap", "stacked"})
+  {
+    Bodies            setup(Scene::read(source_dir + "/prm/" + name + ".prm"));
+    const ReportNodes report = setup.report();
+    FullOrderContact  fields(setup.components, *setup.interface);
+    FullOrderContact  outputs(setup.components, *setup.interface);
+    outputs.set_displacement_fields(false);
+    for (const double scale : {1.0, 1.05})
+    {
+      setup.owned[0]->set_zone_materials({scale * 210e9}, {7900});
+      for (auto *solver : {&fields, &outputs})
+        solver->set_load_factor(0.8 * scale);
+      const ContactSolution a = fields.solve(&report);
+      const ContactSolution b = outputs.solve(&report);
+      EXPECT_NEAR(b.normal_force, a.normal_force, 1e-8 * a.normal_force);
+      EXPECT_NEAR(b.tangential_force,
+                  a.tangential_force,
+                  1e-8 * std::abs(a.normal_force));
+      for (unsigned int d = 0; d < 2; ++d)
+      {
+        EXPECT_NEAR(b.slave_displacement[d],
+                    a.slave_displacement[d],
+                    1e-8 * std::abs(a.slave_displacement[1]));
+        for (unsigned int i = 0; i < 2; ++i)
+          EXPECT_NEAR(b.master_displacements[i][d],
+                      a.master_displacements[i][d],
+                      1e-8 * std::abs(a.slave_displacement[1]));
+      }
+      EXPECT_TRUE(b.displacements.empty());
+      // The second solve at the same (scaled) stiffness needs no
+      // back-substitution at all.
+      if (scale != 1.0)
+      {
+        const unsigned int before = outputs.n_back_substitutions();
+        outputs.set_load_factor(0.9);
+        outputs.solve(&report);
+        EXPECT_EQ(outputs.n_back_substitutions(), before);
+      }
+    }
+  }
+}
+
 
 // ----------------------------------------------------------------------------
 // Reduced models
@@ -1061,6 +1103,42 @@ TEST(ReducedModel, RebuildsFromSmallMatricesForNewModuli)
   for (unsigned int i = 0; i < 2; ++i)
     EXPECT_LE(relative(r.master_displacements[i], f.master_displacements[i]),
               1e-7);
+
+  // The same by scaling the nominal model's blocks (the fuzzy study's route
+  // for a change of E of a whole body), and back by replacing a component.
+  std::vector<ReducedComponentMatrices> nominal_matrices;
+  for (unsigned int c = 0; c < 2; ++c)
+    nominal_matrices.push_back(
+      nominal.components[c]->matrices(setup.interface->gap_operator(c),
+                                      observed[c]));
+  ReducedContactModel scaled(nominal_matrices,
+                             setup.interface->initial_gaps(),
+                             setup.interface->friction_coefficients());
+  scaled.set_stiffness_scales({1.05, 0.95});
+  const ContactState s_state =
+    ActiveSetSolver().solve(scaled.problem(), 1, 1, "scaled");
+  const ContactSolution s = scaled.solution(s_state, 1, &report, "scaled");
+  EXPECT_NEAR(s.normal_force, r.normal_force, 1e-10 * r.normal_force);
+  EXPECT_LE(relative(s.slave_displacement, r.slave_displacement), 1e-10);
+  for (unsigned int i = 0; i < 2; ++i)
+    EXPECT_LE(relative(s.master_displacements[i], r.master_displacements[i]),
+              1e-10);
+  const auto q_scaled  = scaled.coordinates(s_state.p, 1);
+  const auto q_rebuilt = rebuilt.coordinates(s_state.p, 1);
+  for (unsigned int c = 0; c < 2; ++c)
+  {
+    Vector<double> d = q_scaled[c];
+    d -= q_rebuilt[c];
+    EXPECT_LE(d.l2_norm(), 1e-10 * q_rebuilt[c].l2_norm());
+  }
+  scaled.replace_component(0, nominal_matrices[0]);
+  scaled.replace_component(1, nominal_matrices[1]);
+  const ReducedContactModel fresh(nominal_matrices,
+                                  setup.interface->initial_gaps(),
+                                  setup.interface->friction_coefficients());
+  Vector<double>            dg = scaled.problem().g_load;
+  dg -= fresh.problem().g_load;
+  EXPECT_LE(dg.l2_norm(), 1e-14 * fresh.problem().g_load.l2_norm());
 }
 
 // Displacements recovered at the observed DoFs (from precomputed

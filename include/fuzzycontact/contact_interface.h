@@ -198,6 +198,13 @@ namespace FuzzyContact
     ReportNodes
     report_nodes(const unsigned int k) const;
 
+    /**
+     * The slave node that the programs report: the one farthest along the
+     * master tangent (P1's bottom-right corner in the default scenes).
+     */
+    unsigned int
+    report_node() const;
+
     /** Largest initial penetration allowed for pair @p pair [m]. */
     double
     penetration_tolerance(const unsigned int pair) const;

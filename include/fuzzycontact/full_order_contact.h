@@ -77,6 +77,19 @@ namespace FuzzyContact
     set_warm_start(const bool warm_start);
 
     /**
+     * With @p fields = false, solve() does not compute the displacement
+     * fields: the forces come from the active set solution on W (whose
+     * columns carry the accuracy of a plain back-substitution, about 1e-9
+     * relative on fine meshes), the residual is measured on W's gaps, and
+     * the report nodes' displacements are combined from the free solutions
+     * and the columns kept at those DoFs. No back-substitution is needed
+     * once the columns exist, which makes repeated solves (the Extension
+     * Principle's thousands of samples) cheap. Default: true.
+     */
+    void
+    set_displacement_fields(const bool fields);
+
+    /**
      * Solves the contact problem for the current stiffness, load factor,
      * friction coefficients and gaps. The displacements of @p report (if
      * given) and the full displacement fields go into the solution; its
@@ -137,7 +150,22 @@ namespace FuzzyContact
       double                                       scale = 1;
       Vector<double>                               free_solution;
       std::vector<std::unique_ptr<Vector<double>>> columns;
+      // K_c,ref^{-1} C_c^T e_j at the DoFs of observed_dofs, per column j.
+      std::vector<std::vector<double>> observed_columns;
     };
+    // The DoFs of the report nodes, per component (set by solve()).
+    std::vector<std::vector<types::global_dof_index>> observed_dofs;
+    bool displacement_fields_ = true;
+
+    // Makes sure the columns kept at the report's DoFs exist: if the report
+    // changed, the columns are recomputed.
+    void
+    observe(const ReportNodes &report);
+    // The displacement of DoF @p dof of component @p c for forces @p p.
+    double
+                            observed_displacement(const unsigned int            c,
+                                                  const types::global_dof_index dof,
+                                                  const Vector<double>         &p);
     std::vector<Factorized> factorized;
     // Columns of W = sum_c (column of c) / s_c at the current scales.
     std::vector<std::unique_ptr<Vector<double>>> columns;

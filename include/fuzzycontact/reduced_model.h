@@ -172,6 +172,23 @@ namespace FuzzyContact
     /** The problem, to change mu or shift the gaps. */
     ContactProblem &
     problem();
+    /**
+     * Component c's stiffness is now s_c times the one its reduced matrices
+     * were built for (a change of E of every zone by one factor): W and
+     * g_load become sums of W_c / s_c and g_load,c / s_c, and the recovered
+     * displacements scale likewise. Exact, O(rows^2) per component.
+     */
+    void
+    set_stiffness_scales(const std::vector<double> &scales);
+
+    /**
+     * Replaces the reduced matrices of component @p c (for instance those
+     * of a reanalysed basis) and rebuilds W and g_load; the component's
+     * scale is reset to 1.
+     */
+    void
+    replace_component(const unsigned int c, ReducedComponentMatrices matrices);
+
     /** C_r,c K_r,c^{-1} C_r,c^T: W is their sum. */
     const FullMatrix<double> &
     component_flexibility(const unsigned int c) const;
@@ -196,9 +213,19 @@ namespace FuzzyContact
              const std::string  &solver) const;
 
   private:
+    // Factorises component c's K_r and forms its blocks (W_c, g_load,c and
+    // the observation matrices).
+    void
+    compute_blocks(const unsigned int c);
+    // W = sum_c W_c / s_c, g_load = sum_c g_load,c / s_c.
+    void
+    assemble_problem();
+
     std::vector<ReducedComponentMatrices>                  components;
+    std::vector<double>                                    scales;
     std::vector<std::unique_ptr<LAPACKFullMatrix<double>>> factors;
     std::vector<FullMatrix<double>>                        flexibilities;
+    std::vector<Vector<double>>                            load_gaps;
     // O_c K_r,c^{-1} C_r,c^T and O_c K_r,c^{-1} f_r,c: observed
     // displacements straight from the forces.
     std::vector<FullMatrix<double>> observation_flexibility;

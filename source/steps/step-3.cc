@@ -345,12 +345,8 @@ namespace Step3
 
     // The report's slave node: the candidate farthest along the master
     // tangent (P1's bottom-right corner in both scenes).
-    unsigned int slave = 0;
-    for (unsigned int k = 1; k < interface.n_nodes(); ++k)
-      if (interface.node(k).tangent * interface.node(k).slave.position >
-          interface.node(slave).tangent * interface.node(slave).slave.position)
-        slave = k;
-    const ReportNodes report = interface.report_nodes(slave);
+    const unsigned int slave  = interface.report_node();
+    const ReportNodes  report = interface.report_nodes(slave);
     std::vector<std::vector<types::global_dof_index>> observed(
       components.size());
     for (const FaceNode *node :
