@@ -368,15 +368,21 @@ namespace FuzzyContact
 
 
   void
-  Component::form_global_matrices()
+  Component::form_global_matrices() const
   {
-    stiffness_.reinit(sparsity_pattern_);
-    mass_.reinit(sparsity_pattern_);
+    if (stiffness_.empty())
+    {
+      stiffness_.reinit(sparsity_pattern_);
+      mass_.reinit(sparsity_pattern_);
+    }
+    stiffness_ = 0;
+    mass_      = 0;
     for (unsigned int z = 0; z < zone_stiffness_.size(); ++z)
     {
       stiffness_.add(zone_moduli_[z], zone_stiffness_[z]);
       mass_.add(zone_densities_[z], zone_mass_[z]);
     }
+    matrices_current_ = true;
   }
 
 
@@ -395,9 +401,9 @@ namespace FuzzyContact
       Input::positive(moduli[z], where + ": E");
       Input::positive(densities[z], where + ": rho");
     }
-    zone_moduli_    = moduli;
-    zone_densities_ = densities;
-    form_global_matrices();
+    zone_moduli_      = moduli;
+    zone_densities_   = densities;
+    matrices_current_ = false;
   }
 
 
@@ -525,12 +531,16 @@ namespace FuzzyContact
   const SparseMatrix<double> &
   Component::stiffness_matrix() const
   {
+    if (!matrices_current_)
+      form_global_matrices();
     return stiffness_;
   }
 
   const SparseMatrix<double> &
   Component::mass_matrix() const
   {
+    if (!matrices_current_)
+      form_global_matrices();
     return mass_;
   }
 

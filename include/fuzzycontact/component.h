@@ -95,8 +95,10 @@ namespace FuzzyContact
     zone_densities() const;
 
     /**
-     * Re-forms K and M from the zone matrices for new zone moduli and
-     * densities (one value per zone, all finite and positive).
+     * New zone moduli and densities (one value per zone, all finite and
+     * positive). K and M are re-formed from the zone matrices when they are
+     * next used, so that a caller who only reads zone_moduli() (a solver
+     * that reuses a factorisation of a scaled stiffness) pays nothing.
      */
     void
     set_zone_materials(const std::vector<double> &moduli,
@@ -158,7 +160,7 @@ namespace FuzzyContact
     void
     assemble_loads();
     void
-    form_global_matrices();
+    form_global_matrices() const;
 
     ComponentDescription description_;
     PlaneModel           plane_model_;
@@ -175,10 +177,12 @@ namespace FuzzyContact
     std::vector<SparseMatrix<double>> zone_mass_;
     std::vector<double>               zone_moduli_;
     std::vector<double>               zone_densities_;
-    SparseMatrix<double>              stiffness_;
-    SparseMatrix<double>              mass_;
-    std::vector<Vector<double>>       unit_loads_;
-    Vector<double>                    load_;
+    // Formed from the zone matrices on demand (see set_zone_materials()).
+    mutable SparseMatrix<double> stiffness_;
+    mutable SparseMatrix<double> mass_;
+    mutable bool                 matrices_current_ = false;
+    std::vector<Vector<double>>  unit_loads_;
+    Vector<double>               load_;
   };
 } // namespace FuzzyContact
 
