@@ -77,13 +77,13 @@ namespace
     std::vector<double> times;
     Timer               total;
     while (times.size() < 3 || (total.wall_time() < 0.2 && times.size() < 1000))
-    {
-      Timer t;
-      f();
-      times.push_back(t.wall_time());
-      if (times.size() == 1 && times[0] > 0.2)
-        break;
-    }
+      {
+        Timer t;
+        f();
+        times.push_back(t.wall_time());
+        if (times.size() == 1 && times[0] > 0.2)
+          break;
+      }
     std::sort(times.begin(), times.end());
     return times[times.size() / 2];
   }
@@ -115,11 +115,11 @@ namespace
         : scene(Scene::read(file))
     {
       for (const ComponentDescription &d : scene.components)
-      {
-        owned.push_back(
-          std::make_unique<Component>(d, scene.plane_model, refinements));
-        components.push_back(owned.back().get());
-      }
+        {
+          owned.push_back(
+            std::make_unique<Component>(d, scene.plane_model, refinements));
+          components.push_back(owned.back().get());
+        }
       interface = std::make_unique<ContactInterface>(scene, components);
       interface->set_friction_coefficient(mu);
       unsigned int best = 0;
@@ -151,11 +151,9 @@ namespace
       FullOrderContact full(bodies.components, *bodies.interface);
       r.solution = full.solve(&bodies.report);
       r.cold     = r.solution.time;
-      r.warm     = time_per_call(
-        [&]()
-        {
-          full.solve(&bodies.report);
-        });
+      r.warm     = time_per_call([&]() {
+        full.solve(&bodies.report);
+      });
     }
     // A second cold solve, to see the spread.
     FullOrderContact again(bodies.components, *bodies.interface);
@@ -209,17 +207,17 @@ namespace
     std::vector<ReducedComponentMatrices> matrices;
     Timer                                 t;
     for (unsigned int c = 0; c < bodies.components.size(); ++c)
-    {
-      m->components.push_back(
-        std::make_unique<ReducedComponent>(*bodies.components[c],
-                                           bases[c],
-                                           bodies.interface->contact_dofs(c),
-                                           corrected));
-      m->size = std::max(m->size, m->components.back()->size());
-      matrices.push_back(
-        m->components.back()->matrices(bodies.interface->gap_operator(c),
-                                       bodies.observed[c]));
-    }
+      {
+        m->components.push_back(
+          std::make_unique<ReducedComponent>(*bodies.components[c],
+                                             bases[c],
+                                             bodies.interface->contact_dofs(c),
+                                             corrected));
+        m->size = std::max(m->size, m->components.back()->size());
+        matrices.push_back(
+          m->components.back()->matrices(bodies.interface->gap_operator(c),
+                                         bodies.observed[c]));
+      }
     m->reduction_time = t.wall_time();
     t.restart();
     m->model = std::make_unique<ReducedContactModel>(
@@ -236,17 +234,17 @@ namespace
   reduced_solve(const Model &m, const Bodies &bodies, const double tolerance)
   {
     ContactSolution solution;
-    const auto      solve = [&]()
-    {
+    const auto      solve = [&]() {
       ContactState state;
       if (tolerance <= 0)
         state = ActiveSetSolver().solve(m.model->problem(), 1, 1, "exact");
       else
-      {
-        FL2CParameters parameters;
-        parameters.tolerance = tolerance;
-        state = FL2CSolver(parameters).solve(m.model->problem(), 1, 1, "fl2c");
-      }
+        {
+          FL2CParameters parameters;
+          parameters.tolerance = tolerance;
+          state =
+            FL2CSolver(parameters).solve(m.model->problem(), 1, 1, "fl2c");
+        }
       solution = m.model->solution(state, 1, &bodies.report, "");
     };
     return {solution, time_per_call(solve)};
@@ -261,13 +259,14 @@ namespace
     say("\n## A. Error and time per solve against the number of modes, the "
         "static correction and the regulator tolerance\n");
     for (const std::string name : {"overlap", "stacked"})
-    {
-      const Bodies        bodies(prm + "/" + name + ".prm", refinements, 0.3);
-      const FullReference ref                 = full_reference(bodies);
-      double              modal_time          = 0;
-      const std::vector<ModalBasis> all_modes = modes(bodies, 40, modal_time);
-      std::ostringstream            out;
-      out << "\n### " << name << ": " << bodies.components[0]->n_dofs()
+      {
+        const Bodies        bodies(prm + "/" + name + ".prm", refinements, 0.3);
+        const FullReference ref                 = full_reference(bodies);
+        double              modal_time          = 0;
+        const std::vector<ModalBasis> all_modes = modes(bodies, 40, modal_time);
+        std::ostringstream            out;
+        out
+          << "\n### " << name << ": " << bodies.components[0]->n_dofs()
           << " DoFs per component, " << bodies.interface->n_nodes()
           << " slave nodes, F = 50 kN, mu = 0.3\n\n"
           << "full_order: F_n = " << fixed(ref.solution.normal_force, 1)
@@ -283,45 +282,48 @@ namespace
              "| solver | tolerance | F_n error | slave u error | iterations | "
              "time per solve [s] | full cold / reduced | full warm / reduced "
              "|\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-      say(out.str());
-      for (const unsigned int n : {5u, 9u, 20u, 40u})
-      {
-        std::vector<ModalBasis> bases;
-        for (const ModalBasis &b : all_modes)
-          bases.push_back(truncated(b, n));
-        for (const bool corrected : {false, true})
-        {
-          const auto          model = reduce(bodies, bases, corrected);
-          std::vector<double> tols  = {0.};
-          tols.insert(tols.end(), tolerances.begin(), tolerances.end());
-          for (const double tol : tols)
+        say(out.str());
+        for (const unsigned int n : {5u, 9u, 20u, 40u})
           {
-            std::ostringstream row;
-            row << "| " << n << " | " << (corrected ? "yes" : "no") << " | "
-                << model->size << " | " << fixed(model->reduction_time, 2)
-                << " + " << fixed(model->w_time, 3) << " | "
-                << (tol <= 0 ? "reduced exact" : "FL2C") << " | "
-                << (tol <= 0 ? "1e-10 (residual)" : sci(tol, 0)) << " | ";
-            try
-            {
-              const auto [s, t] = reduced_solve(*model, bodies, tol);
-              row << sci(relative(s.normal_force, ref.solution.normal_force))
-                  << " | "
-                  << sci(relative(s.slave_displacement,
-                                  ref.solution.slave_displacement))
-                  << " | " << s.iterations << " | " << sci(t, 2) << " | "
-                  << fixed(ref.cold / t) << " | " << fixed(ref.warm / t)
-                  << " |\n";
-            }
-            catch (const dealii::ExceptionBase &e)
-            {
-              row << "no convergence | | 20000 (max) | | | |\n";
-            }
-            say(row.str());
+            std::vector<ModalBasis> bases;
+            for (const ModalBasis &b : all_modes)
+              bases.push_back(truncated(b, n));
+            for (const bool corrected : {false, true})
+              {
+                const auto          model = reduce(bodies, bases, corrected);
+                std::vector<double> tols  = {0.};
+                tols.insert(tols.end(), tolerances.begin(), tolerances.end());
+                for (const double tol : tols)
+                  {
+                    std::ostringstream row;
+                    row << "| " << n << " | " << (corrected ? "yes" : "no")
+                        << " | " << model->size << " | "
+                        << fixed(model->reduction_time, 2) << " + "
+                        << fixed(model->w_time, 3) << " | "
+                        << (tol <= 0 ? "reduced exact" : "FL2C") << " | "
+                        << (tol <= 0 ? "1e-10 (residual)" : sci(tol, 0))
+                        << " | ";
+                    try
+                      {
+                        const auto [s, t] = reduced_solve(*model, bodies, tol);
+                        row << sci(relative(s.normal_force,
+                                            ref.solution.normal_force))
+                            << " | "
+                            << sci(relative(s.slave_displacement,
+                                            ref.solution.slave_displacement))
+                            << " | " << s.iterations << " | " << sci(t, 2)
+                            << " | " << fixed(ref.cold / t) << " | "
+                            << fixed(ref.warm / t) << " |\n";
+                      }
+                    catch (const dealii::ExceptionBase &e)
+                      {
+                        row << "no convergence | | 20000 (max) | | | |\n";
+                      }
+                    say(row.str());
+                  }
+              }
           }
-        }
       }
-    }
   }
 
 
@@ -341,45 +343,46 @@ namespace
             : std::vector<unsigned int>{1, 2, 3};
     for (const std::string name : {"overlap", "stacked"})
       for (const unsigned int r : levels)
-      {
-        const Bodies                  bodies(prm + "/" + name + ".prm", r, 0.3);
-        const FullReference           ref        = full_reference(bodies);
-        double                        modal_time = 0;
-        const std::vector<ModalBasis> bases      = modes(bodies, 9, modal_time);
-        const auto                    modal      = reduce(bodies, bases, false);
-        // The static correction stores K^{-1} for every contact DoF: skip
-        // it where that needs more than about 2 GB.
-        const double bytes =
-          8. * bodies.components[0]->n_dofs() * bodies.interface->n_rows() * 2;
-        const bool             with_correction = bytes < 2e9;
-        std::unique_ptr<Model> corrected;
-        if (with_correction)
-          corrected = reduce(bodies, bases, true);
-
-        const auto [fm, t_fm] = reduced_solve(*modal, bodies, 1e-4);
-        std::ostringstream row;
-        row << "| " << name << " | " << bodies.components[0]->n_dofs() << " | "
-            << sci(ref.cold, 2) << " | " << sci(ref.warm, 2) << " | "
-            << fixed(modal_time, 2) << " | ";
-        if (with_correction)
         {
-          const auto [re, t_re] = reduced_solve(*corrected, bodies, 0);
-          const auto [fc, t_fc] = reduced_solve(*corrected, bodies, 1e-4);
-          row << fixed(corrected->reduction_time, 1) << " + "
-              << fixed(corrected->w_time, 2) << " | " << sci(t_re, 2) << " | "
-              << sci(t_fc, 2) << " | " << sci(t_fm, 2) << " | "
-              << fixed(ref.cold / t_re) << " | " << fixed(ref.cold / t_fc)
-              << " | " << fixed(ref.cold / t_fm) << " | "
-              << sci(relative(fc.normal_force, ref.solution.normal_force))
-              << " | ";
+          const Bodies        bodies(prm + "/" + name + ".prm", r, 0.3);
+          const FullReference ref             = full_reference(bodies);
+          double              modal_time      = 0;
+          const std::vector<ModalBasis> bases = modes(bodies, 9, modal_time);
+          const auto                    modal = reduce(bodies, bases, false);
+          // The static correction stores K^{-1} for every contact DoF: skip
+          // it where that needs more than about 2 GB.
+          const double bytes = 8. * bodies.components[0]->n_dofs() *
+                               bodies.interface->n_rows() * 2;
+          const bool             with_correction = bytes < 2e9;
+          std::unique_ptr<Model> corrected;
+          if (with_correction)
+            corrected = reduce(bodies, bases, true);
+
+          const auto [fm, t_fm] = reduced_solve(*modal, bodies, 1e-4);
+          std::ostringstream row;
+          row << "| " << name << " | " << bodies.components[0]->n_dofs()
+              << " | " << sci(ref.cold, 2) << " | " << sci(ref.warm, 2) << " | "
+              << fixed(modal_time, 2) << " | ";
+          if (with_correction)
+            {
+              const auto [re, t_re] = reduced_solve(*corrected, bodies, 0);
+              const auto [fc, t_fc] = reduced_solve(*corrected, bodies, 1e-4);
+              row << fixed(corrected->reduction_time, 1) << " + "
+                  << fixed(corrected->w_time, 2) << " | " << sci(t_re, 2)
+                  << " | " << sci(t_fc, 2) << " | " << sci(t_fm, 2) << " | "
+                  << fixed(ref.cold / t_re) << " | " << fixed(ref.cold / t_fc)
+                  << " | " << fixed(ref.cold / t_fm) << " | "
+                  << sci(relative(fc.normal_force, ref.solution.normal_force))
+                  << " | ";
+            }
+          else
+            row << "skipped (" << fixed(bytes / 1e9, 1) << " GB) | | | "
+                << sci(t_fm, 2) << " | | | " << fixed(ref.cold / t_fm)
+                << " | | ";
+          row << sci(relative(fm.normal_force, ref.solution.normal_force))
+              << " |\n";
+          say(row.str());
         }
-        else
-          row << "skipped (" << fixed(bytes / 1e9, 1) << " GB) | | | "
-              << sci(t_fm, 2) << " | | | " << fixed(ref.cold / t_fm) << " | | ";
-        row << sci(relative(fm.normal_force, ref.solution.normal_force))
-            << " |\n";
-        say(row.str());
-      }
   }
 } // namespace
 
@@ -390,22 +393,22 @@ main(int argc, char **argv)
   const std::string prm   = argc > 1 ? argv[1] : "prm";
   const bool        quick = argc > 2 && std::string(argv[2]) == "quick";
   try
-  {
-    say("# contact_benchmark" + std::string(quick ? " (quick)" : "") +
-        "\n\nTimes are wall times of one run on this machine (2 cores "
-        "shared, Release, reference BLAS); they vary by about 30 % between "
-        "runs. Errors are relative to the full-order answer of the same "
-        "mesh.\n");
-    part_a(prm, quick);
-    part_b(prm, quick);
-    write_file_atomically("contact_benchmark.md", output.str());
-    std::cout << "\nWrote contact_benchmark.md" << std::endl;
-  }
+    {
+      say("# contact_benchmark" + std::string(quick ? " (quick)" : "") +
+          "\n\nTimes are wall times of one run on this machine (2 cores "
+          "shared, Release, reference BLAS); they vary by about 30 % between "
+          "runs. Errors are relative to the full-order answer of the same "
+          "mesh.\n");
+      part_a(prm, quick);
+      part_b(prm, quick);
+      write_file_atomically("contact_benchmark.md", output.str());
+      std::cout << "\nWrote contact_benchmark.md" << std::endl;
+    }
   catch (const dealii::ExceptionBase &e)
-  {
-    std::cerr << "contact_benchmark: error: " << Input::message_of(e)
-              << std::endl;
-    return 1;
-  }
+    {
+      std::cerr << "contact_benchmark: error: " << Input::message_of(e)
+                << std::endl;
+      return 1;
+    }
   return 0;
 }

@@ -56,16 +56,17 @@ namespace
   {
     std::vector<double> times;
     for (unsigned int r = 0; r < repetitions; ++r)
-    {
-      Timer        timer;
-      unsigned int calls = 0;
-      do
       {
-        f();
-        ++calls;
-      } while (timer.wall_time() < 2e-3);
-      times.push_back(timer.wall_time() / calls);
-    }
+        Timer        timer;
+        unsigned int calls = 0;
+        do
+          {
+            f();
+            ++calls;
+          }
+        while (timer.wall_time() < 2e-3);
+        times.push_back(timer.wall_time() / calls);
+      }
     return median(times);
   }
 
@@ -102,13 +103,13 @@ main(int argc, char **argv)
   std::string               scene_file = "prm/cantilever-zones.prm";
   std::vector<unsigned int> refinements;
   for (int a = 1; a < argc; ++a)
-  {
-    const std::string arg = argv[a];
-    if (arg.size() > 4 && arg.substr(arg.size() - 4) == ".prm")
-      scene_file = arg;
-    else
-      refinements.push_back(std::atoi(arg.c_str()));
-  }
+    {
+      const std::string arg = argv[a];
+      if (arg.size() > 4 && arg.substr(arg.size() - 4) == ".prm")
+        scene_file = arg;
+      else
+        refinements.push_back(std::atoi(arg.c_str()));
+    }
   if (refinements.empty())
     refinements = {1, 2, 3};
   const Scene scene = Scene::read(scene_file);
@@ -128,204 +129,195 @@ main(int argc, char **argv)
             << "\n";
 
   for (const Study &study : studies)
-  {
-    std::cout << "\n## " << study.label << "\n\n"
-              << "| DoFs | method | order | basis | offline [s] | online per "
-                 "sample [s] | exact re-solve [s] | speed-up | max rel. "
-                 "error | min MAC |\n"
-              << "|---|---|---|---|---|---|---|---|---|---|\n";
-    for (const unsigned int r : refinements)
     {
-      const Component component(scene.components[0], scene.plane_model, r);
-      ModalParameters modal;
-      modal.n_modes = 9;
-      const ModalBasis nominal =
-        ModalSolver(modal).solve(component.stiffness_matrix(),
-                                 component.mass_matrix(),
-                                 "beam");
-      const ParameterModel model(component, study.parameters);
-
-      std::mt19937                           random(12345);
-      std::uniform_real_distribution<double> uniform(-study.range, study.range);
-      std::vector<std::vector<double>>       samples(n_samples);
-      for (auto &t : samples)
-        for (unsigned int k = 0; k < study.parameters.size(); ++k)
-          t.push_back(uniform(random));
-
-      // The exact re-solve: time and reference modes (3 extra modes for
-      // the MAC pairing, solved separately and not timed).
-      const ExactResolve exact(model, modal);
-      ModalParameters    more = modal;
-      more.n_modes            = 12;
-      const ExactResolve                reference(model, more);
-      std::vector<double>               exact_times;
-      std::vector<ModalBasis>           exact_modes;
-      std::vector<SparseMatrix<double>> masses(n_samples);
-      for (unsigned int s = 0; s < n_samples; ++s)
-      {
-        Timer timer;
-        exact.solve(samples[s]);
-        exact_times.push_back(timer.wall_time());
-        exact_modes.push_back(reference.solve(samples[s]));
-        SparseMatrix<double> K;
-        model.matrices(samples[s], K, masses[s]);
-      }
-      const double time_exact = median(exact_times);
-
-      const auto report =
-        [&](const std::string &method,
-            const unsigned int order,
-            const unsigned int basis,
-            const double       offline,
-            const double       online,
-            const std::function<ReanalysisResult(const std::vector<double> &)>
-              &reanalyse)
-      {
-        double max_error = 0, min_mac = 1;
-        for (unsigned int s = 0; s < n_samples; ++s)
+      std::cout << "\n## " << study.label << "\n\n"
+                << "| DoFs | method | order | basis | offline [s] | online per "
+                   "sample [s] | exact re-solve [s] | speed-up | max rel. "
+                   "error | min MAC |\n"
+                << "|---|---|---|---|---|---|---|---|---|---|\n";
+      for (const unsigned int r : refinements)
         {
-          const ReanalysisResult result = reanalyse(samples[s]);
-          const ModeComparison   c      = compare_modes(result.eigenvalues,
-                                                 result.modes,
-                                                 exact_modes[s],
-                                                 masses[s]);
-          max_error = std::max(max_error, c.max_relative_error);
-          min_mac   = std::min(min_mac, c.min_mac);
-        }
-        std::cout << "| " << component.n_dofs() << " | " << method << " | "
-                  << (order ? std::to_string(order) : "-") << " | "
-                  << (basis ? std::to_string(basis) : "-") << " | "
-                  << fix(offline, 2) << " | " << sci(online, 2) << " | "
-                  << fix(time_exact, 3) << " | " << fix(time_exact / online, 0)
-                  << "x | " << sci(max_error) << " | " << fix(min_mac, 8)
-                  << " |" << std::endl;
-      };
+          const Component component(scene.components[0], scene.plane_model, r);
+          ModalParameters modal;
+          modal.n_modes = 9;
+          const ModalBasis nominal =
+            ModalSolver(modal).solve(component.stiffness_matrix(),
+                                     component.mass_matrix(),
+                                     "beam");
+          const ParameterModel model(component, study.parameters);
 
-      // Parameter-independent HPTP: offline once up to order 3, online at
-      // each order (the eigenvalues and Y only: nothing of size n_dofs).
-      {
-        ParameterIndependentReanalysis pi;
-        Timer                          timer;
-        pi.offline(component,
-                   nominal,
-                   study.parameters,
-                   3,
-                   truncation,
-                   cluster_gap);
-        const double offline = timer.wall_time();
-        for (const unsigned int order : orders)
-        {
-          std::vector<double> times;
-          for (const auto &t : samples)
-            times.push_back(time_median(
-              [&]()
-              {
-                pi.online(t, order);
-              },
-              3));
-          report("hptp-pi",
-                 order,
-                 pi.basis_size(order),
-                 offline,
-                 median(times),
-                 [&](const std::vector<double> &t)
-                 {
-                   return pi.reanalyse(t, order);
-                 });
-        }
-        // The optional work of size n_dofs, for reference.
-        const ReanalysedModes r      = pi.online(samples[0], 2);
-        const double          expand = time_median(
-          [&]()
-          {
-            pi.modes(r);
-          },
-          3);
-        pi.residuals(samples[0], r); // factorises K0 once
-        const double check = time_median(
-          [&]()
-          {
-            pi.residuals(samples[0], r);
-          },
-          3);
-        std::cout << "| " << component.n_dofs()
-                  << " | (hptp-pi, order 2: expanding the 9 modes T Y "
-                  << sci(expand, 2) << " s; residual check " << sci(check, 2)
-                  << " s) | | | | | | | | |" << std::endl;
-      }
+          std::mt19937                           random(12345);
+          std::uniform_real_distribution<double> uniform(-study.range,
+                                                         study.range);
+          std::vector<std::vector<double>>       samples(n_samples);
+          for (auto &t : samples)
+            for (unsigned int k = 0; k < study.parameters.size(); ++k)
+              t.push_back(uniform(random));
 
-      // The sample-dependent rivals: their online cost grows with the mesh.
-      {
-        Timer                      timer;
-        const HomotopyPerturbation hptp(model,
-                                        nominal,
-                                        truncation,
-                                        cluster_gap);
-        const double               offline = timer.wall_time();
-        for (const unsigned int order : {1u, 2u})
-        {
-          std::vector<double> times;
-          for (const auto &t : samples)
-          {
-            Timer tt;
-            hptp.reanalyse(t, order);
-            times.push_back(tt.wall_time());
-          }
-          report("hptp",
-                 order,
-                 0,
-                 offline,
-                 median(times),
-                 [&](const std::vector<double> &t)
-                 {
-                   return hptp.reanalyse(t, order);
-                 });
-        }
-      }
-      {
-        Timer                        timer;
-        const CombinedApproximations ca(model, nominal, truncation);
-        const double                 offline = timer.wall_time();
-        std::vector<double>          times;
-        for (const auto &t : samples)
-        {
-          Timer tt;
-          ca.reanalyse(t, 2);
-          times.push_back(tt.wall_time());
-        }
-        report("ca",
-               2,
-               0,
-               offline,
-               median(times),
-               [&](const std::vector<double> &t)
-               {
-                 return ca.reanalyse(t, 2);
-               });
-      }
-      {
-        Timer                  timer;
-        const FirstOrderTaylor taylor(model, nominal, cluster_gap);
-        const double           offline = timer.wall_time();
-        std::vector<double>    times;
-        for (const auto &t : samples)
-          times.push_back(time_median(
-            [&]()
+          // The exact re-solve: time and reference modes (3 extra modes for
+          // the MAC pairing, solved separately and not timed).
+          const ExactResolve exact(model, modal);
+          ModalParameters    more = modal;
+          more.n_modes            = 12;
+          const ExactResolve                reference(model, more);
+          std::vector<double>               exact_times;
+          std::vector<ModalBasis>           exact_modes;
+          std::vector<SparseMatrix<double>> masses(n_samples);
+          for (unsigned int s = 0; s < n_samples; ++s)
             {
-              taylor.reanalyse(t);
-            },
-            3));
-        report("taylor",
-               1,
-               0,
-               offline,
-               median(times),
-               [&](const std::vector<double> &t)
-               {
-                 return taylor.reanalyse(t);
-               });
-      }
+              Timer timer;
+              exact.solve(samples[s]);
+              exact_times.push_back(timer.wall_time());
+              exact_modes.push_back(reference.solve(samples[s]));
+              SparseMatrix<double> K;
+              model.matrices(samples[s], K, masses[s]);
+            }
+          const double time_exact = median(exact_times);
+
+          const auto report = [&](const std::string               &method,
+                                  const unsigned int               order,
+                                  const unsigned int               basis,
+                                  const double                     offline,
+                                  const double                     online,
+                                  const std::function<ReanalysisResult(
+                                    const std::vector<double> &)> &reanalyse) {
+            double max_error = 0, min_mac = 1;
+            for (unsigned int s = 0; s < n_samples; ++s)
+              {
+                const ReanalysisResult result = reanalyse(samples[s]);
+                const ModeComparison   c = compare_modes(result.eigenvalues,
+                                                       result.modes,
+                                                       exact_modes[s],
+                                                       masses[s]);
+                max_error = std::max(max_error, c.max_relative_error);
+                min_mac   = std::min(min_mac, c.min_mac);
+              }
+            std::cout << "| " << component.n_dofs() << " | " << method << " | "
+                      << (order ? std::to_string(order) : "-") << " | "
+                      << (basis ? std::to_string(basis) : "-") << " | "
+                      << fix(offline, 2) << " | " << sci(online, 2) << " | "
+                      << fix(time_exact, 3) << " | "
+                      << fix(time_exact / online, 0) << "x | " << sci(max_error)
+                      << " | " << fix(min_mac, 8) << " |" << std::endl;
+          };
+
+          // Parameter-independent HPTP: offline once up to order 3, online at
+          // each order (the eigenvalues and Y only: nothing of size n_dofs).
+          {
+            ParameterIndependentReanalysis pi;
+            Timer                          timer;
+            pi.offline(component,
+                       nominal,
+                       study.parameters,
+                       3,
+                       truncation,
+                       cluster_gap);
+            const double offline = timer.wall_time();
+            for (const unsigned int order : orders)
+              {
+                std::vector<double> times;
+                for (const auto &t : samples)
+                  times.push_back(time_median(
+                    [&]() {
+                      pi.online(t, order);
+                    },
+                    3));
+                report("hptp-pi",
+                       order,
+                       pi.basis_size(order),
+                       offline,
+                       median(times),
+                       [&](const std::vector<double> &t) {
+                         return pi.reanalyse(t, order);
+                       });
+              }
+            // The optional work of size n_dofs, for reference.
+            const ReanalysedModes r      = pi.online(samples[0], 2);
+            const double          expand = time_median(
+              [&]() {
+                pi.modes(r);
+              },
+              3);
+            pi.residuals(samples[0], r); // factorises K0 once
+            const double check = time_median(
+              [&]() {
+                pi.residuals(samples[0], r);
+              },
+              3);
+            std::cout << "| " << component.n_dofs()
+                      << " | (hptp-pi, order 2: expanding the 9 modes T Y "
+                      << sci(expand, 2) << " s; residual check "
+                      << sci(check, 2) << " s) | | | | | | | | |" << std::endl;
+          }
+
+          // The sample-dependent rivals: their online cost grows with the mesh.
+          {
+            Timer                      timer;
+            const HomotopyPerturbation hptp(model,
+                                            nominal,
+                                            truncation,
+                                            cluster_gap);
+            const double               offline = timer.wall_time();
+            for (const unsigned int order : {1u, 2u})
+              {
+                std::vector<double> times;
+                for (const auto &t : samples)
+                  {
+                    Timer tt;
+                    hptp.reanalyse(t, order);
+                    times.push_back(tt.wall_time());
+                  }
+                report("hptp",
+                       order,
+                       0,
+                       offline,
+                       median(times),
+                       [&](const std::vector<double> &t) {
+                         return hptp.reanalyse(t, order);
+                       });
+              }
+          }
+          {
+            Timer                        timer;
+            const CombinedApproximations ca(model, nominal, truncation);
+            const double                 offline = timer.wall_time();
+            std::vector<double>          times;
+            for (const auto &t : samples)
+              {
+                Timer tt;
+                ca.reanalyse(t, 2);
+                times.push_back(tt.wall_time());
+              }
+            report("ca",
+                   2,
+                   0,
+                   offline,
+                   median(times),
+                   [&](const std::vector<double> &t) {
+                     return ca.reanalyse(t, 2);
+                   });
+          }
+          {
+            Timer                  timer;
+            const FirstOrderTaylor taylor(model, nominal, cluster_gap);
+            const double           offline = timer.wall_time();
+            std::vector<double>    times;
+            for (const auto &t : samples)
+              times.push_back(time_median(
+                [&]() {
+                  taylor.reanalyse(t);
+                },
+                3));
+            report("taylor",
+                   1,
+                   0,
+                   offline,
+                   median(times),
+                   [&](const std::vector<double> &t) {
+                     return taylor.reanalyse(t);
+                   });
+          }
+        }
     }
-  }
   return 0;
 }

@@ -73,52 +73,52 @@ namespace FuzzyContact
       std::vector<double> lu(n * n);
       double              norm1 = 0;
       for (types::blas_int j = 0; j < n; ++j)
-      {
-        double column = 0;
-        for (types::blas_int i = 0; i < n; ++i)
         {
-          lu[i + j * n] = A(i, j);
-          column += std::abs(A(i, j));
+          double column = 0;
+          for (types::blas_int i = 0; i < n; ++i)
+            {
+              lu[i + j * n] = A(i, j);
+              column += std::abs(A(i, j));
+            }
+          norm1 = std::max(norm1, column);
         }
-        norm1 = std::max(norm1, column);
-      }
       std::vector<types::blas_int> pivots(n);
       types::blas_int              info = 0;
       getrf(&n, &n, lu.data(), &n, pivots.data(), &info);
       Assert(info >= 0, ExcInternalError());
       double rcond = 0;
       if (info == 0)
-      {
-        std::vector<double>          work(4 * n);
-        std::vector<types::blas_int> iwork(n);
-        const char                   norm = '1';
-        dgecon_(&norm,
+        {
+          std::vector<double>          work(4 * n);
+          std::vector<types::blas_int> iwork(n);
+          const char                   norm = '1';
+          dgecon_(&norm,
+                  &n,
+                  lu.data(),
+                  &n,
+                  &norm1,
+                  &rcond,
+                  work.data(),
+                  iwork.data(),
+                  &info);
+          Assert(info == 0, ExcInternalError());
+        }
+      if (rcond > 1e-13)
+        {
+          const char            trans = 'N';
+          const types::blas_int one   = 1;
+          getrs(&trans,
                 &n,
+                &one,
                 lu.data(),
                 &n,
-                &norm1,
-                &rcond,
-                work.data(),
-                iwork.data(),
+                pivots.data(),
+                x.data(),
+                &n,
                 &info);
-        Assert(info == 0, ExcInternalError());
-      }
-      if (rcond > 1e-13)
-      {
-        const char            trans = 'N';
-        const types::blas_int one   = 1;
-        getrs(&trans,
-              &n,
-              &one,
-              lu.data(),
-              &n,
-              pivots.data(),
-              x.data(),
-              &n,
-              &info);
-        Assert(info == 0, ExcInternalError());
-        return x;
-      }
+          Assert(info == 0, ExcInternalError());
+          return x;
+        }
       LAPACKFullMatrix<double> pinv(n, n);
       pinv = A;
       pinv.compute_inverse_svd(1e-13);
@@ -155,17 +155,17 @@ namespace FuzzyContact
       {
         for (unsigned int k = 0; k < status.size(); ++k)
           if (status[k] != ContactStatus::open)
-          {
-            closed.push_back(k);
-            if (status[k] == ContactStatus::stick)
-              sticking.push_back(k);
-          }
+            {
+              closed.push_back(k);
+              if (status[k] == ContactStatus::stick)
+                sticking.push_back(k);
+            }
         for (const unsigned int k : closed)
-        {
-          columns.push_back(normal_row(k));
-          if (mu[k] > 0)
-            columns.push_back(tangential_row(k));
-        }
+          {
+            columns.push_back(normal_row(k));
+            if (mu[k] > 0)
+              columns.push_back(tangential_row(k));
+          }
         W.prepare(columns);
         for (const unsigned int k : closed)
           rows.push_back(normal_row(k));
@@ -175,18 +175,18 @@ namespace FuzzyContact
         const unsigned int size = rows.size();
         A.reinit(size, size);
         for (unsigned int r = 0; r < size; ++r)
-        {
-          const unsigned int i = rows[r];
-          for (unsigned int c = 0; c < closed.size(); ++c)
           {
-            const unsigned int k = closed[c];
-            A(r, c)              = W(i, normal_row(k));
-            if (status[k] == ContactStatus::slip && mu[k] > 0)
-              A(r, c) += mu[k] * sign[k] * W(i, tangential_row(k));
+            const unsigned int i = rows[r];
+            for (unsigned int c = 0; c < closed.size(); ++c)
+              {
+                const unsigned int k = closed[c];
+                A(r, c)              = W(i, normal_row(k));
+                if (status[k] == ContactStatus::slip && mu[k] > 0)
+                  A(r, c) += mu[k] * sign[k] * W(i, tangential_row(k));
+              }
+            for (unsigned int c = 0; c < sticking.size(); ++c)
+              A(r, closed.size() + c) = W(i, tangential_row(sticking[c]));
           }
-          for (unsigned int c = 0; c < sticking.size(); ++c)
-            A(r, closed.size() + c) = W(i, tangential_row(sticking[c]));
-        }
       }
 
       // The forces of a solution x of the system.
@@ -198,12 +198,12 @@ namespace FuzzyContact
       {
         Vector<double> p(2 * status.size());
         for (unsigned int c = 0; c < closed.size(); ++c)
-        {
-          const unsigned int k = closed[c];
-          p[normal_row(k)]     = x[c];
-          if (status[k] == ContactStatus::slip)
-            p[tangential_row(k)] = mu[k] * sign[k] * x[c];
-        }
+          {
+            const unsigned int k = closed[c];
+            p[normal_row(k)]     = x[c];
+            if (status[k] == ContactStatus::slip)
+              p[tangential_row(k)] = mu[k] * sign[k] * x[c];
+          }
         for (unsigned int c = 0; c < sticking.size(); ++c)
           p[tangential_row(sticking[c])] = x[closed.size() + c];
         return p;
@@ -255,28 +255,25 @@ namespace FuzzyContact
     std::vector<double> cn(n, 0.), ct(n, 0.);
     const auto          diagonal_inverse = [&](const unsigned int   row,
                                       std::vector<double> &cache,
-                                      const unsigned int   k)
-    {
+                                      const unsigned int   k) {
       if (cache[k] == 0)
-      {
-        W.prepare({row});
-        const double d = W(row, row);
-        AssertThrow(d > 0 && std::isfinite(d),
-                    ExcMessage(what +
-                               ": the contact flexibility of slave "
-                               "node " +
-                               std::to_string(k) +
-                               " is not positive; the node cannot move."));
-        cache[k] = 1. / d;
-      }
+        {
+          W.prepare({row});
+          const double d = W(row, row);
+          AssertThrow(d > 0 && std::isfinite(d),
+                      ExcMessage(what +
+                                 ": the contact flexibility of slave "
+                                          "node " +
+                                 std::to_string(k) +
+                                 " is not positive; the node cannot move."));
+          cache[k] = 1. / d;
+        }
       return cache[k];
     };
-    const std::function<double(unsigned int)> c_n = [&](const unsigned int k)
-    {
+    const std::function<double(unsigned int)> c_n = [&](const unsigned int k) {
       return diagonal_inverse(normal_row(k), cn, k);
     };
-    const std::function<double(unsigned int)> c_t = [&](const unsigned int k)
-    {
+    const std::function<double(unsigned int)> c_t = [&](const unsigned int k) {
       return diagonal_inverse(tangential_row(k), ct, k);
     };
 
@@ -290,153 +287,149 @@ namespace FuzzyContact
 
     // Phase 1 (without a warm start): the frictionless normal problem by
     // Lawson and Hanson's active set method.
-    if (std::all_of(status.begin(),
-                    status.end(),
-                    [](const ContactStatus s)
-                    {
-                      return s == ContactStatus::open;
-                    }))
-    {
-      std::vector<bool>         closed(n, false), blocked(n, false);
-      std::vector<unsigned int> closed_list, columns;
-      Vector<double>            p(n);
-      std::vector<double>       gn(n);
-      const auto                update_gaps = [&]()
+    if (std::all_of(status.begin(), status.end(), [](const ContactStatus s) {
+          return s == ContactStatus::open;
+        }))
       {
-        for (unsigned int k = 0; k < n; ++k)
-        {
-          gn[k] = step.g_free[normal_row(k)];
-          for (const unsigned int j : closed_list)
-            gn[k] += W(normal_row(k), normal_row(j)) * p[j];
-        }
-      };
-      update_gaps();
-      while (true)
-      {
-        // The most penetrating open node; stop if it penetrates less than
-        // the tolerance allows.
-        int    deepest = -1;
-        double total   = 0;
-        for (unsigned int k = 0; k < n; ++k)
-        {
-          total += p[k];
-          if (!closed[k] && !blocked[k] && gn[k] < 0 &&
-              (deepest < 0 || gn[k] < gn[deepest]))
-            deepest = k;
-        }
-        if (deepest < 0 ||
-            (total > 0 && -c_n(deepest) * gn[deepest] <= tol * total))
-          break;
-        ++iterations;
-        if (iterations > parameters_.max_iterations)
-        {
-          std::ostringstream message;
-          message << what
-                  << ": the frictionless start (Lawson-Hanson) did not "
-                     "finish in max_iterations = "
-                  << parameters_.max_iterations << " iterations (load step "
-                  << step.step
-                  << "); the deepest open node still "
-                     "penetrates by "
-                  << -gn[deepest] << " m.";
-          AssertThrow(false, ExcMessage(message.str()));
-        }
-        closed[deepest]               = true;
-        const Vector<double> p_before = p;
-
-        // Solve on the closed set; step back to the boundary while a force
-        // would become negative.
-        while (true)
-        {
-          closed_list.clear();
-          columns.clear();
+        std::vector<bool>         closed(n, false), blocked(n, false);
+        std::vector<unsigned int> closed_list, columns;
+        Vector<double>            p(n);
+        std::vector<double>       gn(n);
+        const auto                update_gaps = [&]() {
           for (unsigned int k = 0; k < n; ++k)
-            if (closed[k])
             {
-              closed_list.push_back(k);
-              columns.push_back(normal_row(k));
+              gn[k] = step.g_free[normal_row(k)];
+              for (const unsigned int j : closed_list)
+                gn[k] += W(normal_row(k), normal_row(j)) * p[j];
             }
-          W.prepare(columns);
-          const unsigned int size = closed_list.size();
-          FullMatrix<double> A(size, size);
-          Vector<double>     b(size);
-          for (unsigned int r = 0; r < size; ++r)
+        };
+        update_gaps();
+        while (true)
           {
-            b[r] = -step.g_free[normal_row(closed_list[r])];
-            for (unsigned int c = 0; c < size; ++c)
-              A(r, c) =
-                W(normal_row(closed_list[r]), normal_row(closed_list[c]));
-          }
-          const Vector<double> z     = solve_dense(A, b);
-          double               alpha = 1;
-          int                  limit = -1;
-          for (unsigned int r = 0; r < size; ++r)
-            if (z[r] <= 0)
-            {
-              const unsigned int k    = closed_list[r];
-              const double       step = p[k] / (p[k] - z[r]);
-              if (step < alpha)
+            // The most penetrating open node; stop if it penetrates less than
+            // the tolerance allows.
+            int    deepest = -1;
+            double total   = 0;
+            for (unsigned int k = 0; k < n; ++k)
               {
-                alpha = step;
-                limit = k;
+                total += p[k];
+                if (!closed[k] && !blocked[k] && gn[k] < 0 &&
+                    (deepest < 0 || gn[k] < gn[deepest]))
+                  deepest = k;
               }
-            }
-          for (unsigned int r = 0; r < size; ++r)
-          {
-            const unsigned int k = closed_list[r];
-            p[k] += alpha * (z[r] - p[k]);
+            if (deepest < 0 ||
+                (total > 0 && -c_n(deepest) * gn[deepest] <= tol * total))
+              break;
+            ++iterations;
+            if (iterations > parameters_.max_iterations)
+              {
+                std::ostringstream message;
+                message << what
+                        << ": the frictionless start (Lawson-Hanson) did not "
+                           "finish in max_iterations = "
+                        << parameters_.max_iterations
+                        << " iterations (load step " << step.step
+                        << "); the deepest open node still "
+                           "penetrates by "
+                        << -gn[deepest] << " m.";
+                AssertThrow(false, ExcMessage(message.str()));
+              }
+            closed[deepest]               = true;
+            const Vector<double> p_before = p;
+
+            // Solve on the closed set; step back to the boundary while a force
+            // would become negative.
+            while (true)
+              {
+                closed_list.clear();
+                columns.clear();
+                for (unsigned int k = 0; k < n; ++k)
+                  if (closed[k])
+                    {
+                      closed_list.push_back(k);
+                      columns.push_back(normal_row(k));
+                    }
+                W.prepare(columns);
+                const unsigned int size = closed_list.size();
+                FullMatrix<double> A(size, size);
+                Vector<double>     b(size);
+                for (unsigned int r = 0; r < size; ++r)
+                  {
+                    b[r] = -step.g_free[normal_row(closed_list[r])];
+                    for (unsigned int c = 0; c < size; ++c)
+                      A(r, c) = W(normal_row(closed_list[r]),
+                                  normal_row(closed_list[c]));
+                  }
+                const Vector<double> z     = solve_dense(A, b);
+                double               alpha = 1;
+                int                  limit = -1;
+                for (unsigned int r = 0; r < size; ++r)
+                  if (z[r] <= 0)
+                    {
+                      const unsigned int k    = closed_list[r];
+                      const double       step = p[k] / (p[k] - z[r]);
+                      if (step < alpha)
+                        {
+                          alpha = step;
+                          limit = k;
+                        }
+                    }
+                for (unsigned int r = 0; r < size; ++r)
+                  {
+                    const unsigned int k = closed_list[r];
+                    p[k] += alpha * (z[r] - p[k]);
+                  }
+                if (limit < 0)
+                  break;
+                // The node that limited the step, and any other whose force
+                // reached zero, open again.
+                p[limit] = 0;
+                for (unsigned int r = 0; r < size; ++r)
+                  if (p[closed_list[r]] <= 0)
+                    {
+                      p[closed_list[r]]      = 0;
+                      closed[closed_list[r]] = false;
+                    }
+                closed[limit] = false;
+              }
+            closed_list.clear();
+            for (unsigned int k = 0; k < n; ++k)
+              if (closed[k])
+                closed_list.push_back(k);
+            update_gaps();
+            // A node that could not stay closed is not tried again until the
+            // closed set changes otherwise.
+            if (!closed[deepest])
+              {
+                Vector<double> difference = p;
+                difference -= p_before;
+                if (difference.linfty_norm() == 0)
+                  blocked[deepest] = true;
+                else
+                  std::fill(blocked.begin(), blocked.end(), false);
+              }
+            else
+              std::fill(blocked.begin(), blocked.end(), false);
           }
-          if (limit < 0)
-            break;
-          // The node that limited the step, and any other whose force
-          // reached zero, open again.
-          p[limit] = 0;
-          for (unsigned int r = 0; r < size; ++r)
-            if (p[closed_list[r]] <= 0)
-            {
-              p[closed_list[r]]      = 0;
-              closed[closed_list[r]] = false;
-            }
-          closed[limit] = false;
-        }
-        closed_list.clear();
         for (unsigned int k = 0; k < n; ++k)
           if (closed[k])
-            closed_list.push_back(k);
-        update_gaps();
-        // A node that could not stay closed is not tried again until the
-        // closed set changes otherwise.
-        if (!closed[deepest])
-        {
-          Vector<double> difference = p;
-          difference -= p_before;
-          if (difference.linfty_norm() == 0)
-            blocked[deepest] = true;
-          else
-            std::fill(blocked.begin(), blocked.end(), false);
-        }
-        else
-          std::fill(blocked.begin(), blocked.end(), false);
+            {
+              status[k] =
+                mu[k] > 0 ? ContactStatus::stick : ContactStatus::slip;
+              sign[k] = 1;
+            }
       }
-      for (unsigned int k = 0; k < n; ++k)
-        if (closed[k])
-        {
-          status[k] = mu[k] > 0 ? ContactStatus::stick : ContactStatus::slip;
-          sign[k]   = 1;
-        }
-    }
 
     for (unsigned int k = 0; k < n; ++k)
-    {
-      if (status[k] == ContactStatus::stick && mu[k] == 0)
-        status[k] = ContactStatus::slip;
-      if (status[k] == ContactStatus::slip && sign[k] == 0)
-        sign[k] = 1;
-    }
+      {
+        if (status[k] == ContactStatus::stick && mu[k] == 0)
+          status[k] = ContactStatus::slip;
+        if (status[k] == ContactStatus::slip && sign[k] == 0)
+          sign[k] = 1;
+      }
 
     // Phase 2: primal-dual active set iterations.
-    const auto predict = [&](const ContactState &state, const unsigned int k)
-    {
+    const auto predict = [&](const ContactState &state, const unsigned int k) {
       const double a = state.p[normal_row(k)] - c_n(k) * state.g[normal_row(k)];
       if (a <= 0)
         return std::make_pair(ContactStatus::open, 0);
@@ -456,97 +449,99 @@ namespace FuzzyContact
     bool   murty    = false;
     double residual = 0;
     while (true)
-    {
-      ++iterations;
-      const StatusSystem system(W, status, sign, mu);
-      Vector<double>     b(system.rows.size());
-      for (unsigned int r = 0; r < b.size(); ++r)
       {
-        const unsigned int i = system.rows[r];
-        b[r] =
-          (r < system.closed.size() ? 0. : step.g_previous[i]) - step.g_free[i];
-      }
-      state.p = system.forces(solve_dense(system.A, b), status, sign, mu);
-      state.g = gaps_of(W, step.g_free, state.p, system.columns);
-
-      const std::vector<double> r = complementarity_residuals(state.p,
-                                                              state.g,
-                                                              step.g_previous,
-                                                              mu,
-                                                              c_n,
-                                                              c_t);
-      const double scale          = residual_scale(state.p, step.g_free, c_n);
-      const double worst          = *std::max_element(r.begin(), r.end());
-      residual                    = (worst == 0 ? 0. : worst / scale);
-      state.iterations            = iterations;
-      state.residual              = residual;
-      if (residual <= tol)
-      {
-        state.status    = status;
-        state.slip_sign = sign;
-        for (unsigned int k = 0; k < n; ++k)
-          if (status[k] != ContactStatus::slip)
-            state.slip_sign[k] = 0;
-        return state;
-      }
-      if (iterations >= parameters_.max_iterations)
-        break;
-
-      // New status of the nodes whose own residual is too large (only of
-      // the first of them under Murty's rule).
-      std::vector<ContactStatus> new_status = status;
-      std::vector<int>           new_sign   = sign;
-      bool                       changed    = false;
-      for (unsigned int k = 0; k < n && !(murty && changed); ++k)
-        if (r[k] > tol * scale)
-        {
-          const auto [s, d] = predict(state, k);
-          if (s != status[k] || (s == ContactStatus::slip && d != sign[k]))
+        ++iterations;
+        const StatusSystem system(W, status, sign, mu);
+        Vector<double>     b(system.rows.size());
+        for (unsigned int r = 0; r < b.size(); ++r)
           {
-            new_status[k] = s;
-            new_sign[k]   = d;
-            changed       = true;
+            const unsigned int i = system.rows[r];
+            b[r] = (r < system.closed.size() ? 0. : step.g_previous[i]) -
+                   step.g_free[i];
           }
-        }
-      if (!changed)
-      {
-        std::ostringstream message;
-        message << what << ": the active set has settled after " << iterations
-                << " iterations, but the complementarity residual is "
-                << residual << " > " << tol
-                << " (the active system is too ill-conditioned for this "
-                   "tolerance).";
-        AssertThrow(false, ExcMessage(message.str()));
-      }
-      if (seen.count(signature(new_status, new_sign)) > 0)
-      {
-        if (murty)
-        {
-          std::ostringstream message;
-          message << what << ": the active set cycles after " << iterations
-                  << " iterations, even under Murty's least-index rule; "
-                     "complementarity residual "
-                  << residual << ".";
-          AssertThrow(false, ExcMessage(message.str()));
-        }
-        // A cycle: from here on, one node per iteration.
-        murty = true;
-        seen.clear();
-        new_status = status;
-        new_sign   = sign;
-        for (unsigned int k = 0; k < n; ++k)
+        state.p = system.forces(solve_dense(system.A, b), status, sign, mu);
+        state.g = gaps_of(W, step.g_free, state.p, system.columns);
+
+        const std::vector<double> r = complementarity_residuals(state.p,
+                                                                state.g,
+                                                                step.g_previous,
+                                                                mu,
+                                                                c_n,
+                                                                c_t);
+        const double scale          = residual_scale(state.p, step.g_free, c_n);
+        const double worst          = *std::max_element(r.begin(), r.end());
+        residual                    = (worst == 0 ? 0. : worst / scale);
+        state.iterations            = iterations;
+        state.residual              = residual;
+        if (residual <= tol)
+          {
+            state.status    = status;
+            state.slip_sign = sign;
+            for (unsigned int k = 0; k < n; ++k)
+              if (status[k] != ContactStatus::slip)
+                state.slip_sign[k] = 0;
+            return state;
+          }
+        if (iterations >= parameters_.max_iterations)
+          break;
+
+        // New status of the nodes whose own residual is too large (only of
+        // the first of them under Murty's rule).
+        std::vector<ContactStatus> new_status = status;
+        std::vector<int>           new_sign   = sign;
+        bool                       changed    = false;
+        for (unsigned int k = 0; k < n && !(murty && changed); ++k)
           if (r[k] > tol * scale)
+            {
+              const auto [s, d] = predict(state, k);
+              if (s != status[k] || (s == ContactStatus::slip && d != sign[k]))
+                {
+                  new_status[k] = s;
+                  new_sign[k]   = d;
+                  changed       = true;
+                }
+            }
+        if (!changed)
           {
-            const auto [s, d] = predict(state, k);
-            new_status[k]     = s;
-            new_sign[k]       = d;
-            break;
+            std::ostringstream message;
+            message << what << ": the active set has settled after "
+                    << iterations
+                    << " iterations, but the complementarity residual is "
+                    << residual << " > " << tol
+                    << " (the active system is too ill-conditioned for this "
+                       "tolerance).";
+            AssertThrow(false, ExcMessage(message.str()));
           }
+        if (seen.count(signature(new_status, new_sign)) > 0)
+          {
+            if (murty)
+              {
+                std::ostringstream message;
+                message << what << ": the active set cycles after "
+                        << iterations
+                        << " iterations, even under Murty's least-index rule; "
+                           "complementarity residual "
+                        << residual << ".";
+                AssertThrow(false, ExcMessage(message.str()));
+              }
+            // A cycle: from here on, one node per iteration.
+            murty = true;
+            seen.clear();
+            new_status = status;
+            new_sign   = sign;
+            for (unsigned int k = 0; k < n; ++k)
+              if (r[k] > tol * scale)
+                {
+                  const auto [s, d] = predict(state, k);
+                  new_status[k]     = s;
+                  new_sign[k]       = d;
+                  break;
+                }
+          }
+        seen.insert(signature(new_status, new_sign));
+        status = new_status;
+        sign   = new_sign;
       }
-      seen.insert(signature(new_status, new_sign));
-      status = new_status;
-      sign   = new_sign;
-    }
 
     std::ostringstream message;
     message << what
@@ -588,8 +583,7 @@ namespace FuzzyContact
                                problem.g_load,
                                load_factor,
                                n_load_steps,
-                               [&](const LoadStep &step)
-                               {
+                               [&](const LoadStep &step) {
                                  return solve(W, step, problem.mu, what);
                                });
   }

@@ -84,8 +84,7 @@ namespace FuzzyContact
       double
       cantilever_root(const unsigned int n)
       {
-        const auto g = [](const double x)
-        {
+        const auto g = [](const double x) {
           return std::cos(x) + 1. / std::cosh(x);
         };
         std::uintmax_t max_iterations = 200;
@@ -195,33 +194,32 @@ namespace FuzzyContact
       double       u0    = du;
       Determinant  d0    = timoshenko_determinant(beam, u0 * u0);
       for (double u1 = u0 + du; u1 <= u_end; u1 += du)
-      {
-        const Determinant d1 = timoshenko_determinant(beam, u1 * u1);
-        if (std::signbit(d0.value) != std::signbit(d1.value) &&
-            std::signbit(d0.q2) == std::signbit(d1.q2))
         {
-          ++found;
-          if (found == n)
-          {
-            std::uintmax_t max_iterations = 200;
-            const auto     root           = boost::math::tools::toms748_solve(
-              [&](const double u)
-              {
-                return timoshenko_determinant(beam, u * u).value;
-              },
-              u0,
-              u1,
-              d0.value,
-              d1.value,
-              boost::math::tools::eps_tolerance<double>(50),
-              max_iterations);
-            const double u = 0.5 * (root.first + root.second);
-            return u * u / (2. * M_PI);
-          }
+          const Determinant d1 = timoshenko_determinant(beam, u1 * u1);
+          if (std::signbit(d0.value) != std::signbit(d1.value) &&
+              std::signbit(d0.q2) == std::signbit(d1.q2))
+            {
+              ++found;
+              if (found == n)
+                {
+                  std::uintmax_t max_iterations = 200;
+                  const auto     root = boost::math::tools::toms748_solve(
+                    [&](const double u) {
+                      return timoshenko_determinant(beam, u * u).value;
+                    },
+                    u0,
+                    u1,
+                    d0.value,
+                    d1.value,
+                    boost::math::tools::eps_tolerance<double>(50),
+                    max_iterations);
+                  const double u = 0.5 * (root.first + root.second);
+                  return u * u / (2. * M_PI);
+                }
+            }
+          u0 = u1;
+          d0 = d1;
         }
-        u0 = u1;
-        d0 = d1;
-      }
       AssertThrow(false,
                   ExcMessage("Timoshenko frequency " + std::to_string(n) +
                              " not found below the Euler-Bernoulli value."));

@@ -88,42 +88,42 @@ namespace FuzzyContact
         C.push_back(elasticity_tensor(model, 1.0, zone.poissons_ratio));
 
       for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        const unsigned int   z  = cell->material_id();
-        const AssemblyTarget to = target(z);
-        fe_values.reinit(cell);
-        cell_k = 0;
-        cell_m = 0;
-        for (const unsigned int q : fe_values.quadrature_point_indices())
         {
-          for (unsigned int i = 0; i < n; ++i)
-          {
-            eps[i] = fe_values[displacement].symmetric_gradient(i, q);
-            phi[i] = fe_values[displacement].value(i, q);
-          }
-          const double dx = fe_values.JxW(q) * t;
-          for (unsigned int i = 0; i < n; ++i)
-          {
-            const SymmetricTensor<2, 2> sigma_i = C[z] * eps[i];
-            for (unsigned int j = 0; j <= i; ++j)
+          const unsigned int   z  = cell->material_id();
+          const AssemblyTarget to = target(z);
+          fe_values.reinit(cell);
+          cell_k = 0;
+          cell_m = 0;
+          for (const unsigned int q : fe_values.quadrature_point_indices())
             {
-              cell_k(i, j) += (sigma_i * eps[j]) * dx;
-              cell_m(i, j) += (phi[i] * phi[j]) * dx;
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  eps[i] = fe_values[displacement].symmetric_gradient(i, q);
+                  phi[i] = fe_values[displacement].value(i, q);
+                }
+              const double dx = fe_values.JxW(q) * t;
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  const SymmetricTensor<2, 2> sigma_i = C[z] * eps[i];
+                  for (unsigned int j = 0; j <= i; ++j)
+                    {
+                      cell_k(i, j) += (sigma_i * eps[j]) * dx;
+                      cell_m(i, j) += (phi[i] * phi[j]) * dx;
+                    }
+                }
             }
-          }
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = i + 1; j < n; ++j)
+              {
+                cell_k(i, j) = cell_k(j, i);
+                cell_m(i, j) = cell_m(j, i);
+              }
+          cell_k *= to.modulus;
+          cell_m *= to.density;
+          cell->get_dof_indices(dofs);
+          constraints.distribute_local_to_global(cell_k, dofs, *to.stiffness);
+          constraints.distribute_local_to_global(cell_m, dofs, *to.mass);
         }
-        for (unsigned int i = 0; i < n; ++i)
-          for (unsigned int j = i + 1; j < n; ++j)
-          {
-            cell_k(i, j) = cell_k(j, i);
-            cell_m(i, j) = cell_m(j, i);
-          }
-        cell_k *= to.modulus;
-        cell_m *= to.density;
-        cell->get_dof_indices(dofs);
-        constraints.distribute_local_to_global(cell_k, dofs, *to.stiffness);
-        constraints.distribute_local_to_global(cell_m, dofs, *to.mass);
-      }
     }
 
     // Clamped DoFs carry no mass (see the class documentation).
@@ -150,10 +150,10 @@ namespace FuzzyContact
                 ExcMessage("Component " + name() +
                            ": at most 255 material zones are supported."));
     for (const MaterialZone &zone : description_.zones)
-    {
-      zone_moduli_.push_back(zone.youngs_modulus);
-      zone_densities_.push_back(zone.density);
-    }
+      {
+        zone_moduli_.push_back(zone.youngs_modulus);
+        zone_densities_.push_back(zone.density);
+      }
     {
       std::unique_ptr<TimerOutput::Scope> scope;
       if (timer != nullptr)
@@ -190,56 +190,56 @@ namespace FuzzyContact
     const unsigned int  n_zones = d.zones.size();
     std::vector<double> area(n_zones, 0.);
     for (const auto &cell : triangulation_.active_cell_iterators())
-    {
-      const Point<2> c = cell->center();
-      int            z = -1;
-      for (unsigned int k = 0; k < n_zones; ++k)
       {
-        const MaterialZone &zone = d.zones[k];
-        if (c[0] > zone.x_range[0] && c[0] < zone.x_range[1] &&
-            c[1] > zone.y_range[0] && c[1] < zone.y_range[1])
-        {
-          AssertThrow(z < 0,
-                      ExcMessage("Component " + name() + ": zones " +
-                                 d.zones[z].name + " and " + zone.name +
-                                 " overlap."));
-          z = static_cast<int>(k);
-        }
+        const Point<2> c = cell->center();
+        int            z = -1;
+        for (unsigned int k = 0; k < n_zones; ++k)
+          {
+            const MaterialZone &zone = d.zones[k];
+            if (c[0] > zone.x_range[0] && c[0] < zone.x_range[1] &&
+                c[1] > zone.y_range[0] && c[1] < zone.y_range[1])
+              {
+                AssertThrow(z < 0,
+                            ExcMessage("Component " + name() + ": zones " +
+                                       d.zones[z].name + " and " + zone.name +
+                                       " overlap."));
+                z = static_cast<int>(k);
+              }
+          }
+        if (z < 0)
+          {
+            std::ostringstream message;
+            message << "Component " << name() << ": the cell centred at ("
+                    << c[0] << ", " << c[1]
+                    << ") lies in no material zone; the zones must cover "
+                       "the whole component.";
+            AssertThrow(false, ExcMessage(message.str()));
+          }
+        cell->set_material_id(static_cast<types::material_id>(z));
+        area[z] += cell->measure();
       }
-      if (z < 0)
-      {
-        std::ostringstream message;
-        message << "Component " << name() << ": the cell centred at (" << c[0]
-                << ", " << c[1]
-                << ") lies in no material zone; the zones must cover "
-                   "the whole component.";
-        AssertThrow(false, ExcMessage(message.str()));
-      }
-      cell->set_material_id(static_cast<types::material_id>(z));
-      area[z] += cell->measure();
-    }
 
     const double total = d.length() * d.height();
     for (unsigned int k = 0; k < n_zones; ++k)
-    {
-      const MaterialZone &zone = d.zones[k];
-      const double        w    = std::min(zone.x_range[1], d.upper_right[0]) -
-                       std::max(zone.x_range[0], d.lower_left[0]);
-      const double h = std::min(zone.y_range[1], d.upper_right[1]) -
-                       std::max(zone.y_range[0], d.lower_left[1]);
-      const double declared = std::max(w, 0.) * std::max(h, 0.);
-      if (std::abs(declared - area[k]) > 1e-9 * total)
       {
-        std::ostringstream message;
-        message << "Component " << name() << ", zone " << zone.name
-                << ": its edges do not lie on mesh lines (the cells whose "
-                   "centres it contains cover "
-                << area[k] << " m^2 instead of the " << declared
-                << " m^2 it declares); choose subdivisions that fit the "
-                   "zone, or a zone that fits the mesh.";
-        AssertThrow(false, ExcMessage(message.str()));
+        const MaterialZone &zone = d.zones[k];
+        const double        w    = std::min(zone.x_range[1], d.upper_right[0]) -
+                         std::max(zone.x_range[0], d.lower_left[0]);
+        const double h = std::min(zone.y_range[1], d.upper_right[1]) -
+                         std::max(zone.y_range[0], d.lower_left[1]);
+        const double declared = std::max(w, 0.) * std::max(h, 0.);
+        if (std::abs(declared - area[k]) > 1e-9 * total)
+          {
+            std::ostringstream message;
+            message << "Component " << name() << ", zone " << zone.name
+                    << ": its edges do not lie on mesh lines (the cells whose "
+                       "centres it contains cover "
+                    << area[k] << " m^2 instead of the " << declared
+                    << " m^2 it declares); choose subdivisions that fit the "
+                       "zone, or a zone that fits the mesh.";
+            AssertThrow(false, ExcMessage(message.str()));
+          }
       }
-    }
 
     triangulation_.refine_global(n_refinements);
   }
@@ -273,11 +273,11 @@ namespace FuzzyContact
     dof_directions_.resize(dof_handler_.n_dofs());
     std::vector<types::global_dof_index> dofs(fe_.n_dofs_per_cell());
     for (const auto &cell : dof_handler_.active_cell_iterators())
-    {
-      cell->get_dof_indices(dofs);
-      for (unsigned int i = 0; i < dofs.size(); ++i)
-        dof_directions_[dofs[i]] = fe_.system_to_component_index(i).first;
-    }
+      {
+        cell->get_dof_indices(dofs);
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          dof_directions_[dofs[i]] = fe_.system_to_component_index(i).first;
+      }
   }
 
 
@@ -288,17 +288,16 @@ namespace FuzzyContact
     zone_stiffness_.resize(n_zones);
     zone_mass_.resize(n_zones);
     for (unsigned int z = 0; z < n_zones; ++z)
-    {
-      zone_stiffness_[z].reinit(sparsity_pattern_);
-      zone_mass_[z].reinit(sparsity_pattern_);
-    }
+      {
+        zone_stiffness_[z].reinit(sparsity_pattern_);
+        zone_mass_[z].reinit(sparsity_pattern_);
+      }
     assemble_elasticity(
       dof_handler_,
       constraints_,
       description_,
       plane_model_,
-      [this](const unsigned int z)
-      {
+      [this](const unsigned int z) {
         return AssemblyTarget{&zone_stiffness_[z], 1., &zone_mass_[z], 1.};
       });
     for (SparseMatrix<double> &M : zone_mass_)
@@ -317,8 +316,7 @@ namespace FuzzyContact
       constraints_,
       description_,
       plane_model_,
-      [&](const unsigned int z)
-      {
+      [&](const unsigned int z) {
         return AssemblyTarget{&K, zone_moduli_[z], &M, zone_densities_[z]};
       });
     remove_constrained_mass(constraints_, M);
@@ -342,28 +340,28 @@ namespace FuzzyContact
     unit_loads_.clear();
     load_.reinit(dof_handler_.n_dofs());
     for (const EdgeLoad &load : description_.loads)
-    {
-      Vector<double>     f(dof_handler_.n_dofs());
-      const Tensor<1, 2> traction_times_t =
-        load.direction / face_length(description_, load.face);
-      for (const auto &cell : dof_handler_.active_cell_iterators())
-        for (const auto &face : cell->face_iterators())
-          if (face->at_boundary() &&
-              face->boundary_id() == static_cast<unsigned int>(load.face))
-          {
-            fe_face_values.reinit(cell, face);
-            cell_f = 0;
-            for (const unsigned int q :
-                 fe_face_values.quadrature_point_indices())
-              for (unsigned int i = 0; i < n; ++i)
-                cell_f(i) += fe_face_values[displacement].value(i, q) *
-                             traction_times_t * fe_face_values.JxW(q);
-            cell->get_dof_indices(dofs);
-            constraints_.distribute_local_to_global(cell_f, dofs, f);
-          }
-      load_.add(load.total_force, f);
-      unit_loads_.push_back(std::move(f));
-    }
+      {
+        Vector<double>     f(dof_handler_.n_dofs());
+        const Tensor<1, 2> traction_times_t =
+          load.direction / face_length(description_, load.face);
+        for (const auto &cell : dof_handler_.active_cell_iterators())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary() &&
+                face->boundary_id() == static_cast<unsigned int>(load.face))
+              {
+                fe_face_values.reinit(cell, face);
+                cell_f = 0;
+                for (const unsigned int q :
+                     fe_face_values.quadrature_point_indices())
+                  for (unsigned int i = 0; i < n; ++i)
+                    cell_f(i) += fe_face_values[displacement].value(i, q) *
+                                 traction_times_t * fe_face_values.JxW(q);
+                cell->get_dof_indices(dofs);
+                constraints_.distribute_local_to_global(cell_f, dofs, f);
+              }
+        load_.add(load.total_force, f);
+        unit_loads_.push_back(std::move(f));
+      }
   }
 
 
@@ -371,17 +369,17 @@ namespace FuzzyContact
   Component::form_global_matrices() const
   {
     if (stiffness_.empty())
-    {
-      stiffness_.reinit(sparsity_pattern_);
-      mass_.reinit(sparsity_pattern_);
-    }
+      {
+        stiffness_.reinit(sparsity_pattern_);
+        mass_.reinit(sparsity_pattern_);
+      }
     stiffness_ = 0;
     mass_      = 0;
     for (unsigned int z = 0; z < zone_stiffness_.size(); ++z)
-    {
-      stiffness_.add(zone_moduli_[z], zone_stiffness_[z]);
-      mass_.add(zone_densities_[z], zone_mass_[z]);
-    }
+      {
+        stiffness_.add(zone_moduli_[z], zone_stiffness_[z]);
+        mass_.add(zone_densities_[z], zone_mass_[z]);
+      }
     matrices_current_ = true;
   }
 
@@ -395,12 +393,12 @@ namespace FuzzyContact
                            std::to_string(n_zones()) +
                            " zone moduli and densities."));
     for (unsigned int z = 0; z < n_zones(); ++z)
-    {
-      const std::string where =
-        "Component " + name() + ", zone " + description_.zones[z].name;
-      Input::positive(moduli[z], where + ": E");
-      Input::positive(densities[z], where + ": rho");
-    }
+      {
+        const std::string where =
+          "Component " + name() + ", zone " + description_.zones[z].name;
+        Input::positive(moduli[z], where + ": E");
+        Input::positive(densities[z], where + ": rho");
+      }
     zone_moduli_      = moduli;
     zone_densities_   = densities;
     matrices_current_ = false;
@@ -431,13 +429,13 @@ namespace FuzzyContact
       0.5 * (description_.lower_left + description_.upper_right);
     std::vector<Vector<double>> motions(3, Vector<double>(n_dofs()));
     for (unsigned int i = 0; i < n_dofs(); ++i)
-    {
-      const unsigned int c = dof_directions_[i];
-      const Point<2>    &x = support_points_[i];
-      motions[0][i]        = (c == 0 ? 1. : 0.);
-      motions[1][i]        = (c == 1 ? 1. : 0.);
-      motions[2][i] = (c == 0 ? -(x[1] - centre[1]) : (x[0] - centre[0]));
-    }
+      {
+        const unsigned int c = dof_directions_[i];
+        const Point<2>    &x = support_points_[i];
+        motions[0][i]        = (c == 0 ? 1. : 0.);
+        motions[1][i]        = (c == 1 ? 1. : 0.);
+        motions[2][i] = (c == 0 ? -(x[1] - centre[1]) : (x[0] - centre[0]));
+      }
     return motions;
   }
 

@@ -20,20 +20,20 @@ namespace FuzzyContact
     {
       Tensor<1, 2> n;
       switch (face)
-      {
-        case Face::left:
-          n[0] = -1;
-          break;
-        case Face::right:
-          n[0] = 1;
-          break;
-        case Face::bottom:
-          n[1] = -1;
-          break;
-        case Face::top:
-          n[1] = 1;
-          break;
-      }
+        {
+          case Face::left:
+            n[0] = -1;
+            break;
+          case Face::right:
+            n[0] = 1;
+            break;
+          case Face::bottom:
+            n[1] = -1;
+            break;
+          case Face::top:
+            n[1] = 1;
+            break;
+        }
       return n;
     }
 
@@ -63,26 +63,25 @@ namespace FuzzyContact
       const auto           &direction = component.dof_directions();
       std::vector<FaceNode> nodes;
       for (const types::global_dof_index dof : dofs)
-      {
-        bool found = false;
-        for (FaceNode &node : nodes)
-          if (node.position.distance(points[dof]) <
-              1e-12 * component.description().length())
-          {
-            node.dofs[direction[dof]] = dof;
-            found                     = true;
-          }
-        if (!found)
         {
-          FaceNode node{c, points[dof], {{0, 0}}};
-          node.dofs[direction[dof]] = dof;
-          nodes.push_back(node);
+          bool found = false;
+          for (FaceNode &node : nodes)
+            if (node.position.distance(points[dof]) <
+                1e-12 * component.description().length())
+              {
+                node.dofs[direction[dof]] = dof;
+                found                     = true;
+              }
+          if (!found)
+            {
+              FaceNode node{c, points[dof], {{0, 0}}};
+              node.dofs[direction[dof]] = dof;
+              nodes.push_back(node);
+            }
         }
-      }
       std::sort(nodes.begin(),
                 nodes.end(),
-                [&tau](const FaceNode &a, const FaceNode &b)
-                {
+                [&tau](const FaceNode &a, const FaceNode &b) {
                   return tau * a.position < tau * b.position;
                 });
       return nodes;
@@ -143,26 +142,26 @@ namespace FuzzyContact
                            "not be negative."));
     offsets_.push_back(0);
     for (unsigned int c = 0; c < components.size(); ++c)
-    {
-      Assert(components[c] != nullptr, ExcInternalError());
-      AssertThrow(components[c]->name() == scene.components[c].name,
-                  ExcMessage("ContactInterface: component " +
-                             std::to_string(c) + " is " +
-                             components[c]->name() + ", the scene says " +
-                             scene.components[c].name + "."));
-      offsets_.push_back(offsets_.back() + components[c]->n_dofs());
-    }
+      {
+        Assert(components[c] != nullptr, ExcInternalError());
+        AssertThrow(components[c]->name() == scene.components[c].name,
+                    ExcMessage("ContactInterface: component " +
+                               std::to_string(c) + " is " +
+                               components[c]->name() + ", the scene says " +
+                               scene.components[c].name + "."));
+        offsets_.push_back(offsets_.back() + components[c]->n_dofs());
+      }
     for (unsigned int p = 0; p < scene.contact_pairs.size(); ++p)
-    {
-      const ContactPairDescription &pair = scene.contact_pairs[p];
-      pair_names_.push_back(pair.name);
-      penetration_tolerance_.push_back(
-        penetration_tolerance *
-        face_length(
-          scene.components[scene.component_index(pair.master_component)],
-          pair.master_face));
-      add_pair(scene, components, p);
-    }
+      {
+        const ContactPairDescription &pair = scene.contact_pairs[p];
+        pair_names_.push_back(pair.name);
+        penetration_tolerance_.push_back(
+          penetration_tolerance *
+          face_length(
+            scene.components[scene.component_index(pair.master_component)],
+            pair.master_face));
+        add_pair(scene, components, p);
+      }
     build_operators(components);
   }
 
@@ -198,17 +197,16 @@ namespace FuzzyContact
         if (cell->face(f)->at_boundary() &&
             cell->face(f)->boundary_id() ==
               static_cast<unsigned int>(pair.master_face))
-        {
-          Segment segment;
-          segment.nodes   = nodes_of_face(master, m, cell->face(f), tau);
-          segment.s_begin = tau * segment.nodes.front().position;
-          segment.s_end   = tau * segment.nodes.back().position;
-          segments.push_back(segment);
-        }
+          {
+            Segment segment;
+            segment.nodes   = nodes_of_face(master, m, cell->face(f), tau);
+            segment.s_begin = tau * segment.nodes.front().position;
+            segment.s_end   = tau * segment.nodes.back().position;
+            segments.push_back(segment);
+          }
     std::sort(segments.begin(),
               segments.end(),
-              [](const Segment &a, const Segment &b)
-              {
+              [](const Segment &a, const Segment &b) {
                 return a.s_begin < b.s_begin;
               });
     Assert(!segments.empty(), ExcInternalError());
@@ -227,100 +225,99 @@ namespace FuzzyContact
         if (cell->face(f)->at_boundary() &&
             cell->face(f)->boundary_id() ==
               static_cast<unsigned int>(pair.slave_face))
-        {
-          const std::vector<FaceNode> face_nodes =
-            nodes_of_face(slave, s, cell->face(f), tau);
-          const std::vector<double> ts = local_coordinates(face_nodes, tau);
-          const double              length =
-            face_nodes.front().position.distance(face_nodes.back().position);
-          for (unsigned int k = 0; k < face_nodes.size(); ++k)
           {
-            slave_nodes[face_nodes[k].dofs[0]] = face_nodes[k];
-            double integral                    = 0;
-            for (unsigned int q = 0; q < quadrature.size(); ++q)
-              integral += lagrange_values(ts, quadrature.point(q)[0])[k] *
-                          quadrature.weight(q);
-            tributary[face_nodes[k].dofs[0]] += integral * length;
+            const std::vector<FaceNode> face_nodes =
+              nodes_of_face(slave, s, cell->face(f), tau);
+            const std::vector<double> ts = local_coordinates(face_nodes, tau);
+            const double              length =
+              face_nodes.front().position.distance(face_nodes.back().position);
+            for (unsigned int k = 0; k < face_nodes.size(); ++k)
+              {
+                slave_nodes[face_nodes[k].dofs[0]] = face_nodes[k];
+                double integral                    = 0;
+                for (unsigned int q = 0; q < quadrature.size(); ++q)
+                  integral += lagrange_values(ts, quadrature.point(q)[0])[k] *
+                              quadrature.weight(q);
+                tributary[face_nodes[k].dofs[0]] += integral * length;
+              }
+            slave_begin =
+              std::min(slave_begin, tau * face_nodes.front().position);
+            slave_end = std::max(slave_end, tau * face_nodes.back().position);
           }
-          slave_begin =
-            std::min(slave_begin, tau * face_nodes.front().position);
-          slave_end = std::max(slave_end, tau * face_nodes.back().position);
-        }
     slave_face_centre_.push_back(0.5 * (slave_begin + slave_end));
 
     const double tolerance = penetration_tolerance_[p];
     unsigned int n_added   = 0;
     for (const auto &[dof, slave_node] : slave_nodes)
-    {
-      const double s_slave = tau * slave_node.position;
-      if (s_slave < master_begin - s_tolerance ||
-          s_slave > master_end + s_tolerance)
-        continue; // not opposite the master face
-      const auto segment =
-        std::find_if(segments.begin(),
-                     segments.end(),
-                     [&](const Segment &seg)
-                     {
-                       return s_slave >= seg.s_begin - s_tolerance &&
-                              s_slave <= seg.s_end + s_tolerance;
-                     });
-      Assert(segment != segments.end(), ExcInternalError());
-
-      ContactNode node;
-      node.pair         = p;
-      node.slave        = slave_node;
-      node.master_nodes = segment->nodes;
-      node.xi           = std::clamp((s_slave - segment->s_begin) /
-                             (segment->s_end - segment->s_begin),
-                           0.,
-                           1.);
-      node.shape_values =
-        lagrange_values(local_coordinates(segment->nodes, tau), node.xi);
-      node.projection = segment->nodes.front().position +
-                        node.xi * (segment->nodes.back().position -
-                                   segment->nodes.front().position);
-      node.normal               = n_master;
-      node.tangent              = tau;
-      node.friction_coefficient = pair.friction_coefficient;
-      node.tributary_length     = tributary[dof];
-
-      const double geometric_gap =
-        n_master * (slave_node.position - node.projection);
-      node.initial_gap =
-        pair.has_initial_gap ? pair.initial_gap : geometric_gap;
-      if (node.initial_gap < -tolerance)
       {
-        std::ostringstream message;
-        message << where << ": initial penetration of " << -node.initial_gap
-                << " m at the slave node " << point_string(slave_node.position)
-                << " (";
-        if (pair.has_initial_gap)
-          message << "the declared initial gap is " << pair.initial_gap;
-        else
-          message << "from the geometry";
-        message << "); at most " << tolerance
-                << " m is accepted as round-off. Move the bodies apart or "
-                   "set a non-negative initial gap.";
-        AssertThrow(false, ExcMessage(message.str()));
+        const double s_slave = tau * slave_node.position;
+        if (s_slave < master_begin - s_tolerance ||
+            s_slave > master_end + s_tolerance)
+          continue; // not opposite the master face
+        const auto segment =
+          std::find_if(segments.begin(),
+                       segments.end(),
+                       [&](const Segment &seg) {
+                         return s_slave >= seg.s_begin - s_tolerance &&
+                                s_slave <= seg.s_end + s_tolerance;
+                       });
+        Assert(segment != segments.end(), ExcInternalError());
+
+        ContactNode node;
+        node.pair         = p;
+        node.slave        = slave_node;
+        node.master_nodes = segment->nodes;
+        node.xi           = std::clamp((s_slave - segment->s_begin) /
+                               (segment->s_end - segment->s_begin),
+                             0.,
+                             1.);
+        node.shape_values =
+          lagrange_values(local_coordinates(segment->nodes, tau), node.xi);
+        node.projection = segment->nodes.front().position +
+                          node.xi * (segment->nodes.back().position -
+                                     segment->nodes.front().position);
+        node.normal               = n_master;
+        node.tangent              = tau;
+        node.friction_coefficient = pair.friction_coefficient;
+        node.tributary_length     = tributary[dof];
+
+        const double geometric_gap =
+          n_master * (slave_node.position - node.projection);
+        node.initial_gap =
+          pair.has_initial_gap ? pair.initial_gap : geometric_gap;
+        if (node.initial_gap < -tolerance)
+          {
+            std::ostringstream message;
+            message << where << ": initial penetration of " << -node.initial_gap
+                    << " m at the slave node "
+                    << point_string(slave_node.position) << " (";
+            if (pair.has_initial_gap)
+              message << "the declared initial gap is " << pair.initial_gap;
+            else
+              message << "from the geometry";
+            message << "); at most " << tolerance
+                    << " m is accepted as round-off. Move the bodies apart or "
+                       "set a non-negative initial gap.";
+            AssertThrow(false, ExcMessage(message.str()));
+          }
+        // A penetration within the tolerance is round-off of the geometry.
+        node.initial_gap = std::max(node.initial_gap, 0.);
+
+        // A node whose slave and master DoFs are all clamped cannot move
+        // relative to the master: it is no candidate.
+        bool can_move = !slave.is_constrained(slave_node.dofs[0]) ||
+                        !slave.is_constrained(slave_node.dofs[1]);
+        for (unsigned int i = 0; i < node.master_nodes.size(); ++i)
+          if (std::abs(node.shape_values[i]) > 1e-14)
+            for (unsigned int d = 0; d < 2; ++d)
+              can_move = can_move ||
+                         !master.is_constrained(node.master_nodes[i].dofs[d]);
+        if (!can_move)
+          continue;
+
+        nodes_.push_back(node);
+        ++n_added;
       }
-      // A penetration within the tolerance is round-off of the geometry.
-      node.initial_gap = std::max(node.initial_gap, 0.);
-
-      // A node whose slave and master DoFs are all clamped cannot move
-      // relative to the master: it is no candidate.
-      bool can_move = !slave.is_constrained(slave_node.dofs[0]) ||
-                      !slave.is_constrained(slave_node.dofs[1]);
-      for (unsigned int i = 0; i < node.master_nodes.size(); ++i)
-        if (std::abs(node.shape_values[i]) > 1e-14)
-          for (unsigned int d = 0; d < 2; ++d)
-            can_move =
-              can_move || !master.is_constrained(node.master_nodes[i].dofs[d]);
-      if (!can_move)
-        continue;
-
-      nodes_.push_back(node);
-      ++n_added;
-    }
     AssertThrow(n_added > 0,
                 ExcMessage(
                   where + ": no node of the slave face (" +
@@ -339,11 +336,11 @@ namespace FuzzyContact
     const unsigned int n_c = components.size();
     constrained_.resize(n_c);
     for (unsigned int c = 0; c < n_c; ++c)
-    {
-      constrained_[c].resize(components[c]->n_dofs());
-      for (unsigned int i = 0; i < components[c]->n_dofs(); ++i)
-        constrained_[c][i] = components[c]->is_constrained(i);
-    }
+      {
+        constrained_[c].resize(components[c]->n_dofs());
+        for (unsigned int i = 0; i < components[c]->n_dofs(); ++i)
+          constrained_[c][i] = components[c]->is_constrained(i);
+      }
 
     // The entries of C: (row, component, dof, value).
     struct Entry
@@ -354,45 +351,46 @@ namespace FuzzyContact
     };
     std::vector<Entry> entries;
     for (unsigned int k = 0; k < nodes_.size(); ++k)
-    {
-      const ContactNode &node = nodes_[k];
-      for (unsigned int r = 0; r < 2; ++r)
       {
-        const Tensor<1, 2> &direction = (r == 0 ? node.normal : node.tangent);
-        for (unsigned int d = 0; d < 2; ++d)
-        {
-          entries.push_back({2 * k + r,
-                             node.slave.component,
-                             node.slave.dofs[d],
-                             direction[d]});
-          for (unsigned int i = 0; i < node.master_nodes.size(); ++i)
-            entries.push_back({2 * k + r,
-                               node.master_nodes[i].component,
-                               node.master_nodes[i].dofs[d],
-                               -node.shape_values[i] * direction[d]});
-        }
+        const ContactNode &node = nodes_[k];
+        for (unsigned int r = 0; r < 2; ++r)
+          {
+            const Tensor<1, 2> &direction =
+              (r == 0 ? node.normal : node.tangent);
+            for (unsigned int d = 0; d < 2; ++d)
+              {
+                entries.push_back({2 * k + r,
+                                   node.slave.component,
+                                   node.slave.dofs[d],
+                                   direction[d]});
+                for (unsigned int i = 0; i < node.master_nodes.size(); ++i)
+                  entries.push_back({2 * k + r,
+                                     node.master_nodes[i].component,
+                                     node.master_nodes[i].dofs[d],
+                                     -node.shape_values[i] * direction[d]});
+              }
+          }
       }
-    }
 
     patterns_.resize(n_c);
     operators_.resize(n_c);
     contact_dofs_.assign(n_c, {});
     for (unsigned int c = 0; c < n_c; ++c)
-    {
-      DynamicSparsityPattern dsp(n_rows(), components[c]->n_dofs());
-      for (const Entry &e : entries)
-        if (e.component == c && e.value != 0 && !constrained_[c][e.dof])
-        {
-          dsp.add(e.row, e.dof);
-          contact_dofs_[c].push_back(e.dof);
-        }
-      patterns_[c].copy_from(dsp);
-      operators_[c].reinit(patterns_[c]);
-      std::sort(contact_dofs_[c].begin(), contact_dofs_[c].end());
-      contact_dofs_[c].erase(std::unique(contact_dofs_[c].begin(),
-                                         contact_dofs_[c].end()),
-                             contact_dofs_[c].end());
-    }
+      {
+        DynamicSparsityPattern dsp(n_rows(), components[c]->n_dofs());
+        for (const Entry &e : entries)
+          if (e.component == c && e.value != 0 && !constrained_[c][e.dof])
+            {
+              dsp.add(e.row, e.dof);
+              contact_dofs_[c].push_back(e.dof);
+            }
+        patterns_[c].copy_from(dsp);
+        operators_[c].reinit(patterns_[c]);
+        std::sort(contact_dofs_[c].begin(), contact_dofs_[c].end());
+        contact_dofs_[c].erase(std::unique(contact_dofs_[c].begin(),
+                                           contact_dofs_[c].end()),
+                               contact_dofs_[c].end());
+      }
     for (const Entry &e : entries)
       if (e.value != 0 && !constrained_[e.component][e.dof])
         operators_[e.component].add(e.row, e.dof, e.value);
@@ -473,14 +471,15 @@ namespace FuzzyContact
                 ExcMessage("gap offset must be a finite number."));
     for (const ContactNode &node : nodes_)
       if (node.initial_gap + offset < -penetration_tolerance_[node.pair])
-      {
-        std::ostringstream message;
-        message << "Contact " << pair_names_[node.pair] << ": a gap offset of "
-                << offset << " m makes the initial gap of the slave node "
-                << point_string(node.slave.position) << " negative ("
-                << node.initial_gap + offset << " m).";
-        AssertThrow(false, ExcMessage(message.str()));
-      }
+        {
+          std::ostringstream message;
+          message << "Contact " << pair_names_[node.pair]
+                  << ": a gap offset of " << offset
+                  << " m makes the initial gap of the slave node "
+                  << point_string(node.slave.position) << " negative ("
+                  << node.initial_gap + offset << " m).";
+          AssertThrow(false, ExcMessage(message.str()));
+        }
     gap_offset_ = offset;
   }
 
@@ -525,19 +524,19 @@ namespace FuzzyContact
     for (unsigned int c = 0; c < n_components(); ++c)
       forces.emplace_back(offsets_[c + 1] - offsets_[c]);
     for (unsigned int k = 0; k < nodes_.size(); ++k)
-    {
-      const ContactNode &node = nodes_[k];
-      const Tensor<1, 2> force =
-        p[2 * k] * node.normal + p[2 * k + 1] * node.tangent;
-      for (unsigned int d = 0; d < 2; ++d)
       {
-        forces[node.slave.component][node.slave.dofs[d]] += force[d];
-        for (unsigned int i = 0; i < node.master_nodes.size(); ++i)
-          forces[node.master_nodes[i].component]
-                [node.master_nodes[i].dofs[d]] -=
-            node.shape_values[i] * force[d];
+        const ContactNode &node = nodes_[k];
+        const Tensor<1, 2> force =
+          p[2 * k] * node.normal + p[2 * k + 1] * node.tangent;
+        for (unsigned int d = 0; d < 2; ++d)
+          {
+            forces[node.slave.component][node.slave.dofs[d]] += force[d];
+            for (unsigned int i = 0; i < node.master_nodes.size(); ++i)
+              forces[node.master_nodes[i].component]
+                    [node.master_nodes[i].dofs[d]] -=
+                node.shape_values[i] * force[d];
+          }
       }
-    }
     return forces;
   }
 

@@ -11,14 +11,14 @@ namespace FuzzyContact
   to_string(const ContactStatus status)
   {
     switch (status)
-    {
-      case ContactStatus::open:
-        return "open";
-      case ContactStatus::stick:
-        return "stick";
-      case ContactStatus::slip:
-        return "slip";
-    }
+      {
+        case ContactStatus::open:
+          return "open";
+        case ContactStatus::stick:
+          return "stick";
+        case ContactStatus::slip:
+          return "slip";
+      }
     return "?";
   }
 
@@ -94,13 +94,13 @@ namespace FuzzyContact
                 ExcMessage("ContactProblem: W, g_initial and g_load must all "
                            "have 2 rows per node."));
     for (unsigned int i = 0; i < m; ++i)
-    {
-      AssertThrow(std::isfinite(g_initial[i]) && std::isfinite(g_load[i]),
-                  ExcMessage("ContactProblem: a gap is not finite."));
-      for (unsigned int j = 0; j < m; ++j)
-        AssertThrow(std::isfinite(W(i, j)),
-                    ExcMessage("ContactProblem: W has a non-finite entry."));
-    }
+      {
+        AssertThrow(std::isfinite(g_initial[i]) && std::isfinite(g_load[i]),
+                    ExcMessage("ContactProblem: a gap is not finite."));
+        for (unsigned int j = 0; j < m; ++j)
+          AssertThrow(std::isfinite(W(i, j)),
+                      ExcMessage("ContactProblem: W has a non-finite entry."));
+      }
     for (const double value : mu)
       AssertThrow(std::isfinite(value) && value >= 0,
                   ExcMessage("ContactProblem: friction coefficients must not "
@@ -132,18 +132,18 @@ namespace FuzzyContact
     unsigned int iterations = 0;
     double       residual   = 0;
     for (unsigned int s = 1; s <= n_steps; ++s)
-    {
-      LoadStep step;
-      step.step        = s;
-      step.load_factor = load_factor * s / n_steps;
-      step.g_free      = g_initial;
-      step.g_free.add(step.load_factor, g_load);
-      step.g_previous = state.g;
-      step.previous   = state;
-      state           = solve_step(step);
-      iterations += state.iterations;
-      residual = std::max(residual, state.residual);
-    }
+      {
+        LoadStep step;
+        step.step        = s;
+        step.load_factor = load_factor * s / n_steps;
+        step.g_free      = g_initial;
+        step.g_free.add(step.load_factor, g_load);
+        step.g_previous = state.g;
+        step.previous   = state;
+        state           = solve_step(step);
+        iterations += state.iterations;
+        residual = std::max(residual, state.residual);
+      }
     state.iterations = iterations;
     state.residual   = residual;
     return state;
@@ -164,24 +164,25 @@ namespace FuzzyContact
     AssertDimension(g_previous.size(), 2 * n);
     std::vector<double> r(n, 0.);
     for (unsigned int k = 0; k < n; ++k)
-    {
-      const double pn = p[normal_row(k)], pt = p[tangential_row(k)];
-      const double gn = g[normal_row(k)];
-      // An open node with a non-negative gap and no force satisfies both
-      // conditions whatever the scaling.
-      if (pn == 0 && pt == 0 && gn >= 0)
-        continue;
-      const double a   = std::max(0., pn - c_n(k) * gn);
-      const double phi = pn - a;
-      double       psi = pt;
-      if (mu[k] > 0 && a > 0)
       {
-        const double dgt = g[tangential_row(k)] - g_previous[tangential_row(k)];
-        const double z   = pt - c_t(k) * dgt;
-        psi              = pt - std::clamp(z, -mu[k] * a, mu[k] * a);
+        const double pn = p[normal_row(k)], pt = p[tangential_row(k)];
+        const double gn = g[normal_row(k)];
+        // An open node with a non-negative gap and no force satisfies both
+        // conditions whatever the scaling.
+        if (pn == 0 && pt == 0 && gn >= 0)
+          continue;
+        const double a   = std::max(0., pn - c_n(k) * gn);
+        const double phi = pn - a;
+        double       psi = pt;
+        if (mu[k] > 0 && a > 0)
+          {
+            const double dgt =
+              g[tangential_row(k)] - g_previous[tangential_row(k)];
+            const double z = pt - c_t(k) * dgt;
+            psi            = pt - std::clamp(z, -mu[k] * a, mu[k] * a);
+          }
+        r[k] = std::abs(phi) + std::abs(psi);
       }
-      r[k] = std::abs(phi) + std::abs(psi);
-    }
     return r;
   }
 
@@ -236,9 +237,9 @@ namespace FuzzyContact
     normal_force     = 0;
     tangential_force = 0;
     for (unsigned int k = 0; k < n_nodes(); ++k)
-    {
-      normal_force += p_n(k);
-      tangential_force += p_t(k);
-    }
+      {
+        normal_force += p_n(k);
+        tangential_force += p_t(k);
+      }
   }
 } // namespace FuzzyContact

@@ -26,33 +26,32 @@ namespace FuzzyContact
     indices_.push_back(alpha);
     n_up_to_order_.push_back(1);
     for (unsigned int p = 1; p <= max_order; ++p)
-    {
-      if (n_variables > 0)
       {
-        std::vector<std::vector<unsigned int>> of_order;
-        std::vector<unsigned int>              current(n_variables, 0);
-        // Distribute p over the components, first component largest.
-        std::function<void(unsigned int, unsigned int)> fill =
-          [&](const unsigned int k, const unsigned int remaining)
-        {
-          if (k + 1 == n_variables)
+        if (n_variables > 0)
           {
-            current[k] = remaining;
-            of_order.push_back(current);
-            return;
+            std::vector<std::vector<unsigned int>> of_order;
+            std::vector<unsigned int>              current(n_variables, 0);
+            // Distribute p over the components, first component largest.
+            std::function<void(unsigned int, unsigned int)> fill =
+              [&](const unsigned int k, const unsigned int remaining) {
+                if (k + 1 == n_variables)
+                  {
+                    current[k] = remaining;
+                    of_order.push_back(current);
+                    return;
+                  }
+                for (int a = remaining; a >= 0; --a)
+                  {
+                    current[k] = a;
+                    fill(k + 1, remaining - a);
+                  }
+              };
+            fill(0, p);
+            for (const auto &a : of_order)
+              indices_.push_back(a);
           }
-          for (int a = remaining; a >= 0; --a)
-          {
-            current[k] = a;
-            fill(k + 1, remaining - a);
-          }
-        };
-        fill(0, p);
-        for (const auto &a : of_order)
-          indices_.push_back(a);
+        n_up_to_order_.push_back(indices_.size());
       }
-      n_up_to_order_.push_back(indices_.size());
-    }
     for (unsigned int i = 0; i < indices_.size(); ++i)
       position_[indices_[i]] = i;
   }
@@ -143,12 +142,12 @@ namespace FuzzyContact
     std::ostringstream        numbers, frequencies;
     frequencies << std::setprecision(6);
     for (unsigned int i = 0; i < modes.size(); ++i)
-    {
-      const std::string separator =
-        i == 0 ? "" : (i + 1 == modes.size() ? " and " : ", ");
-      numbers << separator << modes[i] + 1;
-      frequencies << separator << f[modes[i]];
-    }
+      {
+        const std::string separator =
+          i == 0 ? "" : (i + 1 == modes.size() ? " and " : ", ");
+        numbers << separator << modes[i] + 1;
+        frequencies << separator << f[modes[i]];
+      }
     return std::string(modes.size() > 1 ? "modes " : "mode ") + numbers.str() +
            " (" + frequencies.str() + " Hz)";
   }
@@ -176,22 +175,23 @@ namespace FuzzyContact
     for (const unsigned int c : cluster)
       for (unsigned int i = 0; i < nominal.size(); ++i)
         if (std::find(cluster.begin(), cluster.end(), i) == cluster.end())
-        {
-          const double a = nominal.eigenvalues[c], b = nominal.eigenvalues[i];
-          if (std::abs(a - b) <= gap * std::max(a, b))
           {
-            std::ostringstream message;
-            message << "modal reanalysis: "
-                    << describe_modes(nominal, {std::min(c, i), std::max(c, i)})
-                    << " lie within a relative gap of "
-                    << std::abs(a - b) / std::max(a, b) << " (cluster gap "
-                    << gap
-                    << ") but are not expanded together as a cluster; the "
-                       "derivatives of the individual modes are not well "
-                       "defined there.";
-            AssertThrow(false, ExcMessage(message.str()));
+            const double a = nominal.eigenvalues[c], b = nominal.eigenvalues[i];
+            if (std::abs(a - b) <= gap * std::max(a, b))
+              {
+                std::ostringstream message;
+                message << "modal reanalysis: "
+                        << describe_modes(nominal,
+                                          {std::min(c, i), std::max(c, i)})
+                        << " lie within a relative gap of "
+                        << std::abs(a - b) / std::max(a, b) << " (cluster gap "
+                        << gap
+                        << ") but are not expanded together as a cluster; the "
+                           "derivatives of the individual modes are not well "
+                           "defined there.";
+                AssertThrow(false, ExcMessage(message.str()));
+              }
           }
-        }
 
     const SparseMatrix<double> &K0 = model.nominal_stiffness();
     const SparseMatrix<double> &M0 = model.nominal_mass();
@@ -202,13 +202,13 @@ namespace FuzzyContact
     for (unsigned int i = 0; i < n; ++i)
       max_K_diagonal = std::max(max_K_diagonal, std::abs(K0.diag_element(i)));
     for (const unsigned int c : cluster)
-    {
-      Vector<double> b(n);
-      M0.vmult(b, nominal.modes[c]);
-      // The border column is scaled to the size of K's entries (see solve()).
-      border_scale.push_back(max_K_diagonal / b.linfty_norm());
-      M0_phi.push_back(std::move(b));
-    }
+      {
+        Vector<double> b(n);
+        M0.vmult(b, nominal.modes[c]);
+        // The border column is scaled to the size of K's entries (see solve()).
+        border_scale.push_back(max_K_diagonal / b.linfty_norm());
+        M0_phi.push_back(std::move(b));
+      }
 
     // K0's pattern, bordered by m dense rows and columns on the DoFs that
     // carry mass (clamped DoFs have zero rows in M0, hence in M0 Phi).
@@ -220,10 +220,10 @@ namespace FuzzyContact
     for (unsigned int i = 0; i < n; ++i)
       if (M0.diag_element(i) != 0)
         for (unsigned int c = 0; c < m; ++c)
-        {
-          dsp.add(i, n + c);
-          dsp.add(n + c, i);
-        }
+          {
+            dsp.add(i, n + c);
+            dsp.add(n + c, i);
+          }
     for (unsigned int c = 0; c < m; ++c)
       for (unsigned int d = 0; d < m; ++d)
         dsp.add(n + c, n + d);
@@ -231,42 +231,42 @@ namespace FuzzyContact
     bordered_pattern.copy_from(dsp);
 
     for (unsigned int j = 0; j < m; ++j)
-    {
-      const double         lambda = nominal.eigenvalues[cluster[j]];
-      SparseMatrix<double> B(bordered_pattern);
-      for (unsigned int i = 0; i < n; ++i)
       {
-        auto k  = K0.begin(i);
-        auto mm = M0.begin(i);
-        for (; k != K0.end(i); ++k, ++mm)
-        {
-          Assert(mm->column() == k->column(), ExcInternalError());
-          B.set(i, k->column(), k->value() - lambda * mm->value());
-        }
-      }
-      for (unsigned int c = 0; c < m; ++c)
+        const double         lambda = nominal.eigenvalues[cluster[j]];
+        SparseMatrix<double> B(bordered_pattern);
         for (unsigned int i = 0; i < n; ++i)
-          if (M0_phi[c][i] != 0)
           {
-            const double v = -border_scale[c] * M0_phi[c][i];
-            B.set(i, n + c, v);
-            B.set(n + c, i, v);
+            auto k  = K0.begin(i);
+            auto mm = M0.begin(i);
+            for (; k != K0.end(i); ++k, ++mm)
+              {
+                Assert(mm->column() == k->column(), ExcInternalError());
+                B.set(i, k->column(), k->value() - lambda * mm->value());
+              }
           }
-      auto solver = std::make_unique<SparseDirectUMFPACK>();
-      try
-      {
-        solver->factorize(B);
+        for (unsigned int c = 0; c < m; ++c)
+          for (unsigned int i = 0; i < n; ++i)
+            if (M0_phi[c][i] != 0)
+              {
+                const double v = -border_scale[c] * M0_phi[c][i];
+                B.set(i, n + c, v);
+                B.set(n + c, i, v);
+              }
+        auto solver = std::make_unique<SparseDirectUMFPACK>();
+        try
+          {
+            solver->factorize(B);
+          }
+        catch (const ExceptionBase &)
+          {
+            AssertThrow(false,
+                        ExcMessage("modal reanalysis: the bordered matrix of " +
+                                   describe_modes(nominal, {cluster[j]}) +
+                                   " is singular; is its eigenvalue repeated "
+                                   "outside its cluster?"));
+          }
+        factorisations.push_back(std::move(solver));
       }
-      catch (const ExceptionBase &)
-      {
-        AssertThrow(false,
-                    ExcMessage("modal reanalysis: the bordered matrix of " +
-                               describe_modes(nominal, {cluster[j]}) +
-                               " is singular; is its eigenvalue repeated "
-                               "outside its cluster?"));
-      }
-      factorisations.push_back(std::move(solver));
-    }
   }
 
 
@@ -340,10 +340,10 @@ namespace FuzzyContact
     result.vectors[0].resize(m);
     result.eigenvalues[0].reinit(m, m);
     for (unsigned int j = 0; j < m; ++j)
-    {
-      result.vectors[0][j]        = nominal.modes[cluster_[j]];
-      result.eigenvalues[0](j, j) = nominal.eigenvalues[cluster_[j]];
-    }
+      {
+        result.vectors[0][j]        = nominal.modes[cluster_[j]];
+        result.eigenvalues[0](j, j) = nominal.eigenvalues[cluster_[j]];
+      }
 
     // Products, by multi-index: M0 X, and K_d X, M_d X per direction (an
     // empty vector stands for a zero product).
@@ -353,40 +353,41 @@ namespace FuzzyContact
       std::vector<std::vector<Vector<double>>>(I.size()));
     auto              MdX = KdX;
     std::vector<bool> direction_has_K(q, false), direction_has_M(q, false);
-    const auto        compute_products = [&](const unsigned int a)
-    {
+    const auto        compute_products = [&](const unsigned int a) {
       M0X[a].resize(m);
       for (unsigned int d = 0; d < q; ++d)
-      {
-        KdX[d][a].resize(m);
-        MdX[d][a].resize(m);
-      }
+        {
+          KdX[d][a].resize(m);
+          MdX[d][a].resize(m);
+        }
       for (unsigned int j = 0; j < m; ++j)
-      {
-        if (a == 0)
-          M0X[a][j] = M0_phi[j];
-        else
         {
-          M0X[a][j].reinit(n);
-          model.nominal_mass().vmult(M0X[a][j], result.vectors[a][j]);
+          if (a == 0)
+            M0X[a][j] = M0_phi[j];
+          else
+            {
+              M0X[a][j].reinit(n);
+              model.nominal_mass().vmult(M0X[a][j], result.vectors[a][j]);
+            }
+          for (unsigned int d = 0; d < q; ++d)
+            {
+              Vector<double> product;
+              if (model.stiffness_change(directions[d],
+                                         result.vectors[a][j],
+                                         product))
+                {
+                  KdX[d][a][j]       = std::move(product);
+                  direction_has_K[d] = true;
+                }
+              if (model.mass_change(directions[d],
+                                    result.vectors[a][j],
+                                    product))
+                {
+                  MdX[d][a][j]       = std::move(product);
+                  direction_has_M[d] = true;
+                }
+            }
         }
-        for (unsigned int d = 0; d < q; ++d)
-        {
-          Vector<double> product;
-          if (model.stiffness_change(directions[d],
-                                     result.vectors[a][j],
-                                     product))
-          {
-            KdX[d][a][j]       = std::move(product);
-            direction_has_K[d] = true;
-          }
-          if (model.mass_change(directions[d], result.vectors[a][j], product))
-          {
-            MdX[d][a][j]       = std::move(product);
-            direction_has_M[d] = true;
-          }
-        }
-      }
     };
     if (order > 0)
       compute_products(0);
@@ -394,94 +395,96 @@ namespace FuzzyContact
     Vector<double>      r(n), x(n);
     std::vector<double> c(m), mu(m);
     for (unsigned int a = 1; a < I.size(); ++a)
-    {
-      const std::vector<unsigned int> &alpha = I[a];
-      result.vectors[a].resize(m);
-      result.eigenvalues[a].reinit(m, m);
-
-      // The splittings alpha = beta + gamma with beta, gamma != 0, and for
-      // each direction d with alpha_d > 0 all splittings of alpha - e_d.
-      std::vector<std::pair<unsigned int, unsigned int>> inner;
-      for (unsigned int b = 1; b < a; ++b)
       {
-        const std::vector<unsigned int> &beta = I[b];
-        bool                             fits = true;
-        std::vector<unsigned int>        gamma(q);
-        for (unsigned int k = 0; k < q; ++k)
-        {
-          fits     = fits && beta[k] <= alpha[k];
-          gamma[k] = fits ? alpha[k] - beta[k] : 0;
-        }
-        if (fits)
-        {
-          const unsigned int g = I.index(gamma);
-          if (g != 0)
-            inner.emplace_back(b, g);
-        }
-      }
-      std::vector<std::vector<std::pair<unsigned int, unsigned int>>> outer(q);
-      std::vector<unsigned int> previous(q, 0);
-      for (unsigned int d = 0; d < q; ++d)
-        if (alpha[d] > 0)
-        {
-          std::vector<unsigned int> reduced = alpha;
-          --reduced[d];
-          previous[d] = I.index(reduced);
-          for (unsigned int b = 0; b <= previous[d]; ++b)
+        const std::vector<unsigned int> &alpha = I[a];
+        result.vectors[a].resize(m);
+        result.eigenvalues[a].reinit(m, m);
+
+        // The splittings alpha = beta + gamma with beta, gamma != 0, and for
+        // each direction d with alpha_d > 0 all splittings of alpha - e_d.
+        std::vector<std::pair<unsigned int, unsigned int>> inner;
+        for (unsigned int b = 1; b < a; ++b)
           {
             const std::vector<unsigned int> &beta = I[b];
             bool                             fits = true;
             std::vector<unsigned int>        gamma(q);
             for (unsigned int k = 0; k < q; ++k)
-            {
-              fits     = fits && beta[k] <= reduced[k];
-              gamma[k] = fits ? reduced[k] - beta[k] : 0;
-            }
+              {
+                fits     = fits && beta[k] <= alpha[k];
+                gamma[k] = fits ? alpha[k] - beta[k] : 0;
+              }
             if (fits)
-              outer[d].emplace_back(b, I.index(gamma));
+              {
+                const unsigned int g = I.index(gamma);
+                if (g != 0)
+                  inner.emplace_back(b, g);
+              }
           }
-        }
+        std::vector<std::vector<std::pair<unsigned int, unsigned int>>> outer(
+          q);
+        std::vector<unsigned int> previous(q, 0);
+        for (unsigned int d = 0; d < q; ++d)
+          if (alpha[d] > 0)
+            {
+              std::vector<unsigned int> reduced = alpha;
+              --reduced[d];
+              previous[d] = I.index(reduced);
+              for (unsigned int b = 0; b <= previous[d]; ++b)
+                {
+                  const std::vector<unsigned int> &beta = I[b];
+                  bool                             fits = true;
+                  std::vector<unsigned int>        gamma(q);
+                  for (unsigned int k = 0; k < q; ++k)
+                    {
+                      fits     = fits && beta[k] <= reduced[k];
+                      gamma[k] = fits ? reduced[k] - beta[k] : 0;
+                    }
+                  if (fits)
+                    outer[d].emplace_back(b, I.index(gamma));
+                }
+            }
 
-      for (unsigned int j = 0; j < m; ++j)
-      {
-        r = 0;
-        std::fill(c.begin(), c.end(), 0.);
-        for (unsigned int d = 0; d < q; ++d)
-          if (alpha[d] > 0 && direction_has_K[d] &&
-              KdX[d][previous[d]][j].size() > 0)
-            r.add(-1., KdX[d][previous[d]][j]);
-        for (const auto &[b, g] : inner)
-          for (unsigned int i = 0; i < m; ++i)
-            if (result.eigenvalues[b](i, j) != 0)
-              r.add(result.eigenvalues[b](i, j), M0X[g][i]);
-        for (unsigned int d = 0; d < q; ++d)
-          if (alpha[d] > 0 && direction_has_M[d])
-            for (const auto &[b, g] : outer[d])
+        for (unsigned int j = 0; j < m; ++j)
+          {
+            r = 0;
+            std::fill(c.begin(), c.end(), 0.);
+            for (unsigned int d = 0; d < q; ++d)
+              if (alpha[d] > 0 && direction_has_K[d] &&
+                  KdX[d][previous[d]][j].size() > 0)
+                r.add(-1., KdX[d][previous[d]][j]);
+            for (const auto &[b, g] : inner)
               for (unsigned int i = 0; i < m; ++i)
-                if (result.eigenvalues[b](i, j) != 0 && MdX[d][g][i].size() > 0)
-                  r.add(result.eigenvalues[b](i, j), MdX[d][g][i]);
+                if (result.eigenvalues[b](i, j) != 0)
+                  r.add(result.eigenvalues[b](i, j), M0X[g][i]);
+            for (unsigned int d = 0; d < q; ++d)
+              if (alpha[d] > 0 && direction_has_M[d])
+                for (const auto &[b, g] : outer[d])
+                  for (unsigned int i = 0; i < m; ++i)
+                    if (result.eigenvalues[b](i, j) != 0 &&
+                        MdX[d][g][i].size() > 0)
+                      r.add(result.eigenvalues[b](i, j), MdX[d][g][i]);
 
-        if (mass_normalise)
-        {
-          double sum = 0;
-          for (const auto &[b, g] : inner)
-            sum += result.vectors[b][0] * M0X[g][0];
-          for (unsigned int d = 0; d < q; ++d)
-            if (alpha[d] > 0 && direction_has_M[d])
-              for (const auto &[b, g] : outer[d])
-                if (MdX[d][g][0].size() > 0)
-                  sum += result.vectors[b][0] * MdX[d][g][0];
-          c[0] = 0.5 * sum;
-        }
+            if (mass_normalise)
+              {
+                double sum = 0;
+                for (const auto &[b, g] : inner)
+                  sum += result.vectors[b][0] * M0X[g][0];
+                for (unsigned int d = 0; d < q; ++d)
+                  if (alpha[d] > 0 && direction_has_M[d])
+                    for (const auto &[b, g] : outer[d])
+                      if (MdX[d][g][0].size() > 0)
+                        sum += result.vectors[b][0] * MdX[d][g][0];
+                c[0] = 0.5 * sum;
+              }
 
-        solve(j, r, c, x, mu);
-        result.vectors[a][j] = x;
-        for (unsigned int i = 0; i < m; ++i)
-          result.eigenvalues[a](i, j) = mu[i];
+            solve(j, r, c, x, mu);
+            result.vectors[a][j] = x;
+            for (unsigned int i = 0; i < m; ++i)
+              result.eigenvalues[a](i, j) = mu[i];
+          }
+        if (I.order(a) < order)
+          compute_products(a);
       }
-      if (I.order(a) < order)
-        compute_products(a);
-    }
     return result;
   }
 
@@ -510,31 +513,32 @@ namespace FuzzyContact
     EigenpairDerivatives result;
     result.mode = cluster_[0];
     for (unsigned int k = 0; k < n_p; ++k)
-    {
-      std::vector<unsigned int> e(n_p, 0);
-      e[k]                 = 1;
-      const unsigned int a = I.index(e);
-      result.eigenvalue.push_back(taylor.eigenvalues[a](0, 0));
-      result.mode_shape.push_back(taylor.vectors[a][0]);
-    }
+      {
+        std::vector<unsigned int> e(n_p, 0);
+        e[k]                 = 1;
+        const unsigned int a = I.index(e);
+        result.eigenvalue.push_back(taylor.eigenvalues[a](0, 0));
+        result.mode_shape.push_back(taylor.vectors[a][0]);
+      }
     if (order == 2)
-    {
-      result.second_eigenvalue.reinit(n_p, n_p);
-      result.second_mode_shape.resize(n_p, std::vector<Vector<double>>(n_p));
-      for (unsigned int k = 0; k < n_p; ++k)
-        for (unsigned int l = 0; l < n_p; ++l)
-        {
-          std::vector<unsigned int> e(n_p, 0);
-          ++e[k];
-          ++e[l];
-          const unsigned int a = I.index(e);
-          // phi_alpha = D^alpha phi / alpha!, and (2,0,..)! = 2.
-          const double factor            = I.factorial(a);
-          result.second_eigenvalue(k, l) = factor * taylor.eigenvalues[a](0, 0);
-          result.second_mode_shape[k][l] = taylor.vectors[a][0];
-          result.second_mode_shape[k][l] *= factor;
-        }
-    }
+      {
+        result.second_eigenvalue.reinit(n_p, n_p);
+        result.second_mode_shape.resize(n_p, std::vector<Vector<double>>(n_p));
+        for (unsigned int k = 0; k < n_p; ++k)
+          for (unsigned int l = 0; l < n_p; ++l)
+            {
+              std::vector<unsigned int> e(n_p, 0);
+              ++e[k];
+              ++e[l];
+              const unsigned int a = I.index(e);
+              // phi_alpha = D^alpha phi / alpha!, and (2,0,..)! = 2.
+              const double factor = I.factorial(a);
+              result.second_eigenvalue(k, l) =
+                factor * taylor.eigenvalues[a](0, 0);
+              result.second_mode_shape[k][l] = taylor.vectors[a][0];
+              result.second_mode_shape[k][l] *= factor;
+            }
+      }
     return result;
   }
 } // namespace FuzzyContact

@@ -57,8 +57,7 @@ namespace FuzzyContact
     prm.enter_subsection("FL2C");
     calibration       = prm.get("calibration") == "prm" ? Calibration::prm
                                                         : Calibration::automatic;
-    const auto points = [&](const std::string &key)
-    {
+    const auto points = [&](const std::string &key) {
       const std::vector<double> v =
         Input::to_doubles(prm.get(key), "FL2C: " + key, 3);
       return std::array<double, 3>{{v[0], v[1], v[2]}};
@@ -157,141 +156,134 @@ namespace FuzzyContact
 
     double force_change = std::numeric_limits<double>::infinity();
     for (unsigned int it = 1; it <= parameters_.max_iterations; ++it)
-    {
-      // 1. Reduced solve: the gaps of the current forces.
-      state.g = step.g_free;
-      for (unsigned int j = 0; j < 2 * n; ++j)
-        if (state.p[j] != 0)
-          for (unsigned int i = 0; i < 2 * n; ++i)
-            state.g[i] += W(i, j) * state.p[j];
+      {
+        // 1. Reduced solve: the gaps of the current forces.
+        state.g = step.g_free;
+        for (unsigned int j = 0; j < 2 * n; ++j)
+          if (state.p[j] != 0)
+            for (unsigned int i = 0; i < 2 * n; ++i)
+              state.g[i] += W(i, j) * state.p[j];
 
-      // Convergence: the gaps, and the force change of the last step.
-      double total = 0;
-      for (unsigned int k = 0; k < n; ++k)
-        total += state.p[normal_row(k)];
-      bool gaps_ok = true;
-      for (unsigned int k = 0; k < n && gaps_ok; ++k)
-      {
-        const double pn = state.p[normal_row(k)];
-        const double pt = state.p[tangential_row(k)];
-        const double gn = state.g[normal_row(k)];
-        const double dgt =
-          state.g[tangential_row(k)] - step.g_previous[tangential_row(k)];
-        if (pn > 0)
-        {
-          gaps_ok = std::abs(gn) <= gap_tol;
-          if (mu[k] > 0 && std::abs(pt) < mu[k] * pn)
-            gaps_ok = gaps_ok && std::abs(dgt) <= gap_tol;
-          else if (mu[k] > 0)
-            gaps_ok = gaps_ok && (pt > 0 ? dgt : -dgt) <= gap_tol;
-        }
-        else
-          gaps_ok = gn >= -gap_tol;
-      }
-      if (gaps_ok &&
-          (force_change <= parameters_.tolerance * total || total == 0))
-      {
-        state.iterations = it;
-        break;
-      }
-      if (it == parameters_.max_iterations)
-      {
-        state.iterations            = it;
-        const std::vector<double> r = complementarity_residuals(
-          state.p,
-          state.g,
-          step.g_previous,
-          mu,
-          [&](unsigned int k)
+        // Convergence: the gaps, and the force change of the last step.
+        double total = 0;
+        for (unsigned int k = 0; k < n; ++k)
+          total += state.p[normal_row(k)];
+        bool gaps_ok = true;
+        for (unsigned int k = 0; k < n && gaps_ok; ++k)
           {
-            return 1. / W(normal_row(k), normal_row(k));
-          },
-          [&](unsigned int k)
+            const double pn = state.p[normal_row(k)];
+            const double pt = state.p[tangential_row(k)];
+            const double gn = state.g[normal_row(k)];
+            const double dgt =
+              state.g[tangential_row(k)] - step.g_previous[tangential_row(k)];
+            if (pn > 0)
+              {
+                gaps_ok = std::abs(gn) <= gap_tol;
+                if (mu[k] > 0 && std::abs(pt) < mu[k] * pn)
+                  gaps_ok = gaps_ok && std::abs(dgt) <= gap_tol;
+                else if (mu[k] > 0)
+                  gaps_ok = gaps_ok && (pt > 0 ? dgt : -dgt) <= gap_tol;
+              }
+            else
+              gaps_ok = gn >= -gap_tol;
+          }
+        if (gaps_ok &&
+            (force_change <= parameters_.tolerance * total || total == 0))
           {
-            return 1. / W(tangential_row(k), tangential_row(k));
-          });
-        const double scale =
-          residual_scale(state.p,
-                         step.g_free,
-                         [&](unsigned int k)
-                         {
-                           return 1. / W(normal_row(k), normal_row(k));
+            state.iterations = it;
+            break;
+          }
+        if (it == parameters_.max_iterations)
+          {
+            state.iterations            = it;
+            const std::vector<double> r = complementarity_residuals(
+              state.p,
+              state.g,
+              step.g_previous,
+              mu,
+              [&](unsigned int k) {
+                return 1. / W(normal_row(k), normal_row(k));
+              },
+              [&](unsigned int k) {
+                return 1. / W(tangential_row(k), tangential_row(k));
+              });
+            const double scale =
+              residual_scale(state.p, step.g_free, [&](unsigned int k) {
+                return 1. / W(normal_row(k), normal_row(k));
+              });
+            std::ostringstream message;
+            message << what << ": the fuzzy regulators did not converge in "
+                    << parameters_.max_iterations << " iterations (load step "
+                    << step.step << "); complementarity residual "
+                    << *std::max_element(r.begin(), r.end()) / scale
+                    << ", last force change " << force_change << " N.";
+            AssertThrow(false, ExcMessage(message.str()));
+          }
+
+        // 2. Regulators, node by node, most penetrating first; each acts on
+        // the gaps left by the force changes before it (the reduced solve
+        // is incremental: a change dp_j moves the gaps by W e_j dp_j).
+        std::vector<unsigned int> order;
+        for (unsigned int k = 0; k < n; ++k)
+          if (state.p[normal_row(k)] > 0 || state.g[normal_row(k)] < 0)
+            order.push_back(k);
+        std::stable_sort(order.begin(),
+                         order.end(),
+                         [&](const unsigned int i, const unsigned int j) {
+                           return state.g[normal_row(i)] <
+                                  state.g[normal_row(j)];
                          });
-        std::ostringstream message;
-        message << what << ": the fuzzy regulators did not converge in "
-                << parameters_.max_iterations << " iterations (load step "
-                << step.step << "); complementarity residual "
-                << *std::max_element(r.begin(), r.end()) / scale
-                << ", last force change " << force_change << " N.";
-        AssertThrow(false, ExcMessage(message.str()));
+        const auto apply = [&](const unsigned int row, const double change) {
+          if (change == 0)
+            return;
+          state.p[row] += change;
+          for (unsigned int i = 0; i < 2 * n; ++i)
+            state.g[i] += W(i, row) * change;
+          force_change = std::max(force_change, std::abs(change));
+        };
+        force_change = 0;
+        for (const unsigned int k : order)
+          {
+            const unsigned int rn = normal_row(k), rt = tangential_row(k);
+            // Normal regulator: gap -> force increment.
+            const double dpn = automatic ? shape(state.g[rn] / g_ref) * g_ref /
+                                             (shape_gain * W(rn, rn))
+                                         : normal(state.g[rn]);
+            const double pn  = std::max(0., state.p[rn] + dpn);
+            apply(rn, pn - state.p[rn]);
+            if (mu[k] == 0)
+              continue;
+            // Tangential regulator: slip of the step -> force increment,
+            // capped by Coulomb's bound.
+            const double dgt = state.g[rt] - step.g_previous[rt];
+            const double dpt =
+              automatic ? shape(dgt / g_ref) * g_ref / (shape_gain * W(rt, rt))
+                        : tangential(dgt);
+            apply(rt,
+                  std::clamp(state.p[rt] + dpt, -mu[k] * pn, mu[k] * pn) -
+                    state.p[rt]);
+          }
       }
-
-      // 2. Regulators, node by node, most penetrating first; each acts on
-      // the gaps left by the force changes before it (the reduced solve
-      // is incremental: a change dp_j moves the gaps by W e_j dp_j).
-      std::vector<unsigned int> order;
-      for (unsigned int k = 0; k < n; ++k)
-        if (state.p[normal_row(k)] > 0 || state.g[normal_row(k)] < 0)
-          order.push_back(k);
-      std::stable_sort(order.begin(),
-                       order.end(),
-                       [&](const unsigned int i, const unsigned int j)
-                       {
-                         return state.g[normal_row(i)] < state.g[normal_row(j)];
-                       });
-      const auto apply = [&](const unsigned int row, const double change)
-      {
-        if (change == 0)
-          return;
-        state.p[row] += change;
-        for (unsigned int i = 0; i < 2 * n; ++i)
-          state.g[i] += W(i, row) * change;
-        force_change = std::max(force_change, std::abs(change));
-      };
-      force_change = 0;
-      for (const unsigned int k : order)
-      {
-        const unsigned int rn = normal_row(k), rt = tangential_row(k);
-        // Normal regulator: gap -> force increment.
-        const double dpn = automatic ? shape(state.g[rn] / g_ref) * g_ref /
-                                         (shape_gain * W(rn, rn))
-                                     : normal(state.g[rn]);
-        const double pn  = std::max(0., state.p[rn] + dpn);
-        apply(rn, pn - state.p[rn]);
-        if (mu[k] == 0)
-          continue;
-        // Tangential regulator: slip of the step -> force increment,
-        // capped by Coulomb's bound.
-        const double dgt = state.g[rt] - step.g_previous[rt];
-        const double dpt =
-          automatic ? shape(dgt / g_ref) * g_ref / (shape_gain * W(rt, rt))
-                    : tangential(dgt);
-        apply(rt,
-              std::clamp(state.p[rt] + dpt, -mu[k] * pn, mu[k] * pn) -
-                state.p[rt]);
-      }
-    }
 
     // 3. Status of the converged forces.
     for (unsigned int k = 0; k < n; ++k)
-    {
-      const double pn = state.p[normal_row(k)], pt = state.p[tangential_row(k)];
-      if (pn <= 0)
-        state.status[k] = ContactStatus::open;
-      else if (mu[k] > 0 && std::abs(pt) < mu[k] * pn)
-        state.status[k] = ContactStatus::stick;
-      else
       {
-        state.status[k]    = ContactStatus::slip;
-        state.slip_sign[k] = pt >= 0 ? 1 : -1;
+        const double pn = state.p[normal_row(k)],
+                     pt = state.p[tangential_row(k)];
+        if (pn <= 0)
+          state.status[k] = ContactStatus::open;
+        else if (mu[k] > 0 && std::abs(pt) < mu[k] * pn)
+          state.status[k] = ContactStatus::stick;
+        else
+          {
+            state.status[k]    = ContactStatus::slip;
+            state.slip_sign[k] = pt >= 0 ? 1 : -1;
+          }
       }
-    }
-    const auto c_n = [&](unsigned int k)
-    {
+    const auto c_n = [&](unsigned int k) {
       return 1. / W(normal_row(k), normal_row(k));
     };
-    const auto c_t = [&](unsigned int k)
-    {
+    const auto c_t = [&](unsigned int k) {
       return 1. / W(tangential_row(k), tangential_row(k));
     };
     const std::vector<double> r     = complementarity_residuals(state.p,
@@ -318,8 +310,7 @@ namespace FuzzyContact
                                problem.g_load,
                                load_factor,
                                n_load_steps,
-                               [&](const LoadStep &step)
-                               {
+                               [&](const LoadStep &step) {
                                  return solve(problem, step, what);
                                });
   }

@@ -98,30 +98,29 @@ namespace FuzzyContact
                     const std::vector<double> &v,
                     const std::string         &what)
   {
-    const auto expect = [&](const std::size_t n)
-    {
+    const auto expect = [&](const std::size_t n) {
       AssertThrow(v.size() == n,
                   ExcMessage(what + ": a " + shape + " fuzzy number needs " +
                              std::to_string(n) + " values, got " +
                              std::to_string(v.size()) + "."));
     };
     if (shape == "crisp")
-    {
-      expect(1);
-      AssertThrow(std::isfinite(v[0]),
-                  ExcMessage(what + ": the value must be finite."));
-      return crisp(v[0]);
-    }
+      {
+        expect(1);
+        AssertThrow(std::isfinite(v[0]),
+                    ExcMessage(what + ": the value must be finite."));
+        return crisp(v[0]);
+      }
     if (shape == "triangular")
-    {
-      expect(3);
-      return triangular(v[0], v[1], v[2], what);
-    }
+      {
+        expect(3);
+        return triangular(v[0], v[1], v[2], what);
+      }
     if (shape == "trapezoidal")
-    {
-      expect(4);
-      return trapezoidal(v[0], v[1], v[2], v[3], what);
-    }
+      {
+        expect(4);
+        return trapezoidal(v[0], v[1], v[2], v[3], what);
+      }
     AssertThrow(false,
                 ExcMessage(what + ": unknown shape <" + shape +
                            ">; use crisp, triangular or trapezoidal."));
@@ -182,19 +181,19 @@ namespace FuzzyContact
     std::ostringstream s;
     s.precision(6);
     switch (shape_)
-    {
-      case Shape::crisp:
-        s << "crisp(" << points_[0] << ")";
-        break;
-      case Shape::triangular:
-        s << "triangular(" << points_[0] << ", " << points_[1] << ", "
-          << points_[3] << ")";
-        break;
-      case Shape::trapezoidal:
-        s << "trapezoidal(" << points_[0] << ", " << points_[1] << ", "
-          << points_[2] << ", " << points_[3] << ")";
-        break;
-    }
+      {
+        case Shape::crisp:
+          s << "crisp(" << points_[0] << ")";
+          break;
+        case Shape::triangular:
+          s << "triangular(" << points_[0] << ", " << points_[1] << ", "
+            << points_[3] << ")";
+          break;
+        case Shape::trapezoidal:
+          s << "trapezoidal(" << points_[0] << ", " << points_[1] << ", "
+            << points_[2] << ", " << points_[3] << ")";
+          break;
+      }
     return s.str();
   }
 

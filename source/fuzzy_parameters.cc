@@ -19,25 +19,25 @@ namespace FuzzyContact
                       "interface.gap, ...); each has a subsection 'Fuzzy "
                       "parameter <name>'.");
     for (const std::string &name : names_)
-    {
-      prm.enter_subsection("Fuzzy parameter " + name);
-      prm.declare_entry("shape",
-                        "triangular",
-                        Patterns::Selection("crisp|triangular|trapezoidal"),
-                        "Membership function.");
-      prm.declare_entry("values",
-                        "",
-                        Patterns::Anything(),
-                        "crisp: x; triangular: a, m, b; trapezoidal: a, "
-                        "m1, m2, b (support [a, b], core [m1, m2]).",
-                        /*has_to_be_set=*/true);
-      prm.declare_entry("relative",
-                        "false",
-                        Patterns::Bool(),
-                        "If true, the values are factors of the scene's "
-                        "own value of the quantity.");
-      prm.leave_subsection();
-    }
+      {
+        prm.enter_subsection("Fuzzy parameter " + name);
+        prm.declare_entry("shape",
+                          "triangular",
+                          Patterns::Selection("crisp|triangular|trapezoidal"),
+                          "Membership function.");
+        prm.declare_entry("values",
+                          "",
+                          Patterns::Anything(),
+                          "crisp: x; triangular: a, m, b; trapezoidal: a, "
+                          "m1, m2, b (support [a, b], core [m1, m2]).",
+                          /*has_to_be_set=*/true);
+        prm.declare_entry("relative",
+                          "false",
+                          Patterns::Bool(),
+                          "If true, the values are factors of the scene's "
+                          "own value of the quantity.");
+        prm.leave_subsection();
+      }
   }
 
 
@@ -47,15 +47,16 @@ namespace FuzzyContact
     std::vector<std::string> names;
     for (const std::string &n :
          Utilities::split_string_list(prm.get("fuzzy parameters"), ','))
-    {
-      AssertThrow(!n.empty(),
-                  ExcMessage("fuzzy parameters: the list contains an empty "
-                             "name."));
-      for (const std::string &other : names)
-        AssertThrow(other != n,
-                    ExcMessage("fuzzy parameters: <" + n + "> appears twice."));
-      names.push_back(n);
-    }
+      {
+        AssertThrow(!n.empty(),
+                    ExcMessage("fuzzy parameters: the list contains an empty "
+                               "name."));
+        for (const std::string &other : names)
+          AssertThrow(other != n,
+                      ExcMessage("fuzzy parameters: <" + n +
+                                 "> appears twice."));
+        names.push_back(n);
+      }
     const bool changed = names != names_;
     names_             = names;
     return changed;
@@ -68,28 +69,28 @@ namespace FuzzyContact
     learn_names(prm);
     parameters_.clear();
     for (const std::string &name : names_)
-    {
-      const std::string where = "Fuzzy parameter " + name;
-      FuzzyParameter    p;
-      p.quantity = SceneQuantity::parse(name, scene);
-      prm.enter_subsection(where);
-      std::vector<double> values =
-        Input::to_doubles(prm.get("values"), where + ": values");
-      if (prm.get_bool("relative"))
       {
-        const double nominal = p.quantity.value(scene);
-        for (double &v : values)
-          v *= nominal;
-      }
-      p.number = FuzzyNumber::from(prm.get("shape"), values, where);
-      prm.leave_subsection();
+        const std::string where = "Fuzzy parameter " + name;
+        FuzzyParameter    p;
+        p.quantity = SceneQuantity::parse(name, scene);
+        prm.enter_subsection(where);
+        std::vector<double> values =
+          Input::to_doubles(prm.get("values"), where + ": values");
+        if (prm.get_bool("relative"))
+          {
+            const double nominal = p.quantity.value(scene);
+            for (double &v : values)
+              v *= nominal;
+          }
+        p.number = FuzzyNumber::from(prm.get("shape"), values, where);
+        prm.leave_subsection();
 
-      // Every value of the support must be admissible for the quantity.
-      Scene check = scene;
-      for (const double v : {p.number.points()[0], p.number.points()[3]})
-        p.quantity.apply(check, v);
-      parameters_.push_back(p);
-    }
+        // Every value of the support must be admissible for the quantity.
+        Scene check = scene;
+        for (const double v : {p.number.points()[0], p.number.points()[3]})
+          p.quantity.apply(check, v);
+        parameters_.push_back(p);
+      }
   }
 
 

@@ -62,21 +62,21 @@ namespace FuzzyContact
         return names;
       std::set<std::string> seen;
       for (const std::string &name : Utilities::split_string_list(text, ','))
-      {
-        AssertThrow(!name.empty(),
-                    ExcMessage(what + ": the list <" + text +
-                               "> contains an empty name."));
-        for (const char c : name)
-          AssertThrow(std::isalnum(static_cast<unsigned char>(c)) || c == '_' ||
-                        c == '-',
+        {
+          AssertThrow(!name.empty(),
+                      ExcMessage(what + ": the list <" + text +
+                                 "> contains an empty name."));
+          for (const char c : name)
+            AssertThrow(std::isalnum(static_cast<unsigned char>(c)) ||
+                          c == '_' || c == '-',
+                        ExcMessage(what + ": the name <" + name +
+                                   "> may only contain letters, digits, "
+                                   "'_' and '-'."));
+          AssertThrow(seen.insert(name).second,
                       ExcMessage(what + ": the name <" + name +
-                                 "> may only contain letters, digits, "
-                                 "'_' and '-'."));
-        AssertThrow(seen.insert(name).second,
-                    ExcMessage(what + ": the name <" + name +
-                               "> appears twice."));
-        names.push_back(name);
-      }
+                                 "> appears twice."));
+          names.push_back(name);
+        }
       return names;
     }
 
@@ -159,14 +159,14 @@ namespace FuzzyContact
       // Each pass can only learn the names one level deeper, so a handful
       // of passes settles any sensible file.
       for (unsigned int pass = 0; pass < 8; ++pass)
-      {
-        ParameterHandler   prm;
-        std::istringstream in(text);
-        declare(prm);
-        prm.parse_input(in, source_name, "", /*skip_undefined=*/true);
-        if (!learn_names(prm))
-          break;
-      }
+        {
+          ParameterHandler   prm;
+          std::istringstream in(text);
+          declare(prm);
+          prm.parse_input(in, source_name, "", /*skip_undefined=*/true);
+          if (!learn_names(prm))
+            break;
+        }
       ParameterHandler   prm;
       std::istringstream in(text);
       declare(prm);
@@ -185,11 +185,11 @@ namespace FuzzyContact
       std::istringstream lines(info.str());
       std::string        line, compact;
       while (std::getline(lines, line))
-      {
-        line = Utilities::trim(line);
-        if (!line.empty())
-          compact += (compact.empty() ? "" : " ") + line;
-      }
+        {
+          line = Utilities::trim(line);
+          if (!line.empty())
+            compact += (compact.empty() ? "" : " ") + line;
+        }
       return compact;
     }
   } // namespace Input

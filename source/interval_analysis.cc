@@ -116,48 +116,48 @@ namespace FuzzyContact
                            std::vector<std::vector<double>>(alpha.size()));
       result.argmax = result.argmin;
       for (unsigned int l = 0; l < alpha.size(); ++l)
-      {
-        const std::vector<Interval> box = alpha_box(parameters, alpha[l]);
-        for (unsigned int k = 0; k < n_outputs; ++k)
-          result.bounds[k][l] = {std::numeric_limits<double>::infinity(),
-                                 -std::numeric_limits<double>::infinity()};
-        bool any = false;
-        for (unsigned long i = 0; i < points.size(); ++i)
         {
-          bool inside = true;
-          for (unsigned int d = 0; d < box.size() && inside; ++d)
-            inside = box[d].contains(points[i][d],
-                                     1e-12 * (box[d].width() +
-                                              std::abs(box[d].lower)));
-          if (!inside)
-            continue;
-          any = true;
-          AssertThrow(outputs[i].size() == n_outputs,
-                      ExcMessage("The response returned " +
-                                 std::to_string(outputs[i].size()) +
-                                 " outputs instead of " +
-                                 std::to_string(n_outputs) + "."));
+          const std::vector<Interval> box = alpha_box(parameters, alpha[l]);
           for (unsigned int k = 0; k < n_outputs; ++k)
-          {
-            const double v = outputs[i][k];
-            AssertThrow(std::isfinite(v),
-                        ExcMessage("The response returned a non-finite "
-                                   "value."));
-            if (v < result.bounds[k][l].lower)
+            result.bounds[k][l] = {std::numeric_limits<double>::infinity(),
+                                   -std::numeric_limits<double>::infinity()};
+          bool any = false;
+          for (unsigned long i = 0; i < points.size(); ++i)
             {
-              result.bounds[k][l].lower = v;
-              result.argmin[k][l]       = points[i];
+              bool inside = true;
+              for (unsigned int d = 0; d < box.size() && inside; ++d)
+                inside = box[d].contains(points[i][d],
+                                         1e-12 * (box[d].width() +
+                                                  std::abs(box[d].lower)));
+              if (!inside)
+                continue;
+              any = true;
+              AssertThrow(outputs[i].size() == n_outputs,
+                          ExcMessage("The response returned " +
+                                     std::to_string(outputs[i].size()) +
+                                     " outputs instead of " +
+                                     std::to_string(n_outputs) + "."));
+              for (unsigned int k = 0; k < n_outputs; ++k)
+                {
+                  const double v = outputs[i][k];
+                  AssertThrow(std::isfinite(v),
+                              ExcMessage("The response returned a non-finite "
+                                         "value."));
+                  if (v < result.bounds[k][l].lower)
+                    {
+                      result.bounds[k][l].lower = v;
+                      result.argmin[k][l]       = points[i];
+                    }
+                  if (v > result.bounds[k][l].upper)
+                    {
+                      result.bounds[k][l].upper = v;
+                      result.argmax[k][l]       = points[i];
+                    }
+                }
             }
-            if (v > result.bounds[k][l].upper)
-            {
-              result.bounds[k][l].upper = v;
-              result.argmax[k][l]       = points[i];
-            }
-          }
+          Assert(any, ExcInternalError());
+          (void)any;
         }
-        Assert(any, ExcInternalError());
-        (void)any;
-      }
       return result;
     }
 
@@ -179,25 +179,25 @@ namespace FuzzyContact
     {
       std::vector<std::vector<double>> grid;
       for (const FuzzyNumber &p : parameters)
-      {
-        std::set<double> ends;
-        for (const double a : alpha)
         {
-          const Interval cut = p.alpha_cut(a);
-          ends.insert(cut.lower);
-          ends.insert(cut.upper);
+          std::set<double> ends;
+          for (const double a : alpha)
+            {
+              const Interval cut = p.alpha_cut(a);
+              ends.insert(cut.lower);
+              ends.insert(cut.upper);
+            }
+          std::vector<double> g;
+          for (auto it = ends.begin(); it != ends.end(); ++it)
+            {
+              g.push_back(*it);
+              const auto next = std::next(it);
+              if (next != ends.end())
+                for (unsigned int e = 1; e <= extra; ++e)
+                  g.push_back(*it + (*next - *it) * e / (extra + 1.));
+            }
+          grid.push_back(g);
         }
-        std::vector<double> g;
-        for (auto it = ends.begin(); it != ends.end(); ++it)
-        {
-          g.push_back(*it);
-          const auto next = std::next(it);
-          if (next != ends.end())
-            for (unsigned int e = 1; e <= extra; ++e)
-              g.push_back(*it + (*next - *it) * e / (extra + 1.));
-        }
-        grid.push_back(g);
-      }
       return grid;
     }
   } // namespace
@@ -215,16 +215,16 @@ namespace FuzzyContact
     std::vector<std::vector<double>> points;
     std::set<std::vector<double>>    seen;
     for (const double a : alpha)
-    {
-      const std::vector<Interval> box = alpha_box(parameters, a);
-      for (unsigned long corner = 0; corner < (1ul << n); ++corner)
       {
-        std::vector<double> p(n);
-        for (unsigned int d = 0; d < n; ++d)
-          p[d] = (corner >> d) & 1 ? box[d].upper : box[d].lower;
-        add_unique(points, seen, p);
+        const std::vector<Interval> box = alpha_box(parameters, a);
+        for (unsigned long corner = 0; corner < (1ul << n); ++corner)
+          {
+            std::vector<double> p(n);
+            for (unsigned int d = 0; d < n; ++d)
+              p[d] = (corner >> d) & 1 ? box[d].upper : box[d].lower;
+            add_unique(points, seen, p);
+          }
       }
-    }
     const auto        outputs = evaluate_distributed(points, response, comm);
     FuzzyOutputBounds result =
       bounds_over_points(parameters, alpha, points, outputs, n_outputs);
@@ -264,16 +264,16 @@ namespace FuzzyContact
       total *= g.size();
     points.reserve(total);
     for (unsigned long i = 0; i < total; ++i)
-    {
-      std::vector<double> p(grid.size());
-      unsigned long       rest = i;
-      for (unsigned int d = 0; d < grid.size(); ++d)
       {
-        p[d] = grid[d][rest % grid[d].size()];
-        rest /= grid[d].size();
+        std::vector<double> p(grid.size());
+        unsigned long       rest = i;
+        for (unsigned int d = 0; d < grid.size(); ++d)
+          {
+            p[d] = grid[d][rest % grid[d].size()];
+            rest /= grid[d].size();
+          }
+        points.push_back(std::move(p));
       }
-      points.push_back(std::move(p));
-    }
     const auto        outputs = evaluate_distributed(points, response, comm);
     FuzzyOutputBounds result =
       bounds_over_points(parameters, alpha, points, outputs, n_outputs);

@@ -112,13 +112,13 @@ namespace FuzzyContact
       explicit Normalisation(const std::vector<FuzzyNumber> &parameters)
       {
         for (unsigned int d = 0; d < parameters.size(); ++d)
-        {
-          const Interval support = parameters[d].alpha_cut(0);
-          supports.push_back(support);
-          if (support.width() > 0)
-            free.push_back(d);
-          fixed.push_back(parameters[d].alpha_cut(1).midpoint());
-        }
+          {
+            const Interval support = parameters[d].alpha_cut(0);
+            supports.push_back(support);
+            if (support.width() > 0)
+              free.push_back(d);
+            fixed.push_back(parameters[d].alpha_cut(1).midpoint());
+          }
       }
 
       unsigned int
@@ -132,14 +132,14 @@ namespace FuzzyContact
       {
         std::vector<double> p = fixed;
         for (unsigned int i = 0; i < free.size(); ++i)
-        {
-          const Interval &s = supports[free[i]];
-          // The ends are returned exactly, so that vertices coincide with
-          // those of the vertex method and of the cache.
-          p[free[i]] = x[i] <= 0   ? s.lower
-                       : x[i] >= 1 ? s.upper
-                                   : s.lower + x[i] * s.width();
-        }
+          {
+            const Interval &s = supports[free[i]];
+            // The ends are returned exactly, so that vertices coincide with
+            // those of the vertex method and of the cache.
+            p[free[i]] = x[i] <= 0   ? s.lower
+                         : x[i] >= 1 ? s.upper
+                                     : s.lower + x[i] * s.width();
+          }
         return p;
       }
 
@@ -160,11 +160,11 @@ namespace FuzzyContact
       {
         VectorType lo(n_free()), hi(n_free());
         for (unsigned int i = 0; i < free.size(); ++i)
-        {
-          const Interval cut = parameters[free[i]].alpha_cut(alpha);
-          lo[i]              = coordinate(i, cut.lower);
-          hi[i]              = coordinate(i, cut.upper);
-        }
+          {
+            const Interval cut = parameters[free[i]].alpha_cut(alpha);
+            lo[i]              = coordinate(i, cut.lower);
+            hi[i]              = coordinate(i, cut.upper);
+          }
         return {lo, hi};
       }
 
@@ -227,21 +227,21 @@ namespace FuzzyContact
       {
         VectorType xp = x0;
         for (unsigned int i = 0; i < x0.size(); ++i)
-        {
-          const double up   = std::min(x0[i] + step, upper[i]);
-          const double down = std::max(x0[i] - step, lower[i]);
-          if (up - down <= 0)
           {
-            grad[i] = 0; // a crisp level: no room to move
-            continue;
+            const double up   = std::min(x0[i] + step, upper[i]);
+            const double down = std::max(x0[i] - step, lower[i]);
+            if (up - down <= 0)
+              {
+                grad[i] = 0; // a crisp level: no room to move
+                continue;
+              }
+            xp[i]           = up;
+            const double fp = at(xp);
+            xp[i]           = down;
+            const double fm = at(xp);
+            xp[i]           = x0[i];
+            grad[i]         = (fp - fm) / (up - down);
           }
-          xp[i]           = up;
-          const double fp = at(xp);
-          xp[i]           = down;
-          const double fm = at(xp);
-          xp[i]           = x0[i];
-          grad[i]         = (fp - fm) / (up - down);
-        }
       }
 
     private:
@@ -282,35 +282,36 @@ namespace FuzzyContact
       for (unsigned int i = 0; i < n; ++i)
         degenerate = degenerate && upper[i] <= lower[i];
       if (!degenerate)
-      {
-        auto lo = ROL::makePtr<Adaptor>(Teuchos::rcp(new VectorType(lower)));
-        auto hi = ROL::makePtr<Adaptor>(Teuchos::rcp(new VectorType(upper)));
-        auto bounds = ROL::makePtr<ROL::Bounds<double>>(lo, hi);
-        auto problem =
-          ROL::makePtr<ROL::Problem<double>>(ROL::makePtrFromRef(objective), x);
-        problem->addBoundConstraint(bounds);
-        problem->finalize(false, false);
+        {
+          auto lo = ROL::makePtr<Adaptor>(Teuchos::rcp(new VectorType(lower)));
+          auto hi = ROL::makePtr<Adaptor>(Teuchos::rcp(new VectorType(upper)));
+          auto bounds = ROL::makePtr<ROL::Bounds<double>>(lo, hi);
+          auto problem =
+            ROL::makePtr<ROL::Problem<double>>(ROL::makePtrFromRef(objective),
+                                               x);
+          problem->addBoundConstraint(bounds);
+          problem->finalize(false, false);
 
-        ROL::ParameterList list;
-        list.sublist("General").set("Output Level", 0);
-        list.sublist("General").sublist("Secant").set("Type",
-                                                      "Limited-Memory BFGS");
-        list.sublist("Step").set("Type", "Line Search");
-        list.sublist("Step")
-          .sublist("Line Search")
-          .sublist("Descent Method")
-          .set("Type", "Quasi-Newton Method");
-        list.sublist("Status Test")
-          .set("Gradient Tolerance", settings.gradient_tolerance);
-        list.sublist("Status Test")
-          .set("Step Tolerance", settings.step_tolerance);
-        list.sublist("Status Test")
-          .set("Iteration Limit", static_cast<int>(settings.max_iterations));
-        ROL::Solver<double> solver(problem, list);
-        std::ostringstream  quiet;
-        solver.solve(quiet);
-        optimum.iterations = solver.getAlgorithmState()->iter;
-      }
+          ROL::ParameterList list;
+          list.sublist("General").set("Output Level", 0);
+          list.sublist("General").sublist("Secant").set("Type",
+                                                        "Limited-Memory BFGS");
+          list.sublist("Step").set("Type", "Line Search");
+          list.sublist("Step")
+            .sublist("Line Search")
+            .sublist("Descent Method")
+            .set("Type", "Quasi-Newton Method");
+          list.sublist("Status Test")
+            .set("Gradient Tolerance", settings.gradient_tolerance);
+          list.sublist("Status Test")
+            .set("Step Tolerance", settings.step_tolerance);
+          list.sublist("Status Test")
+            .set("Iteration Limit", static_cast<int>(settings.max_iterations));
+          ROL::Solver<double> solver(problem, list);
+          std::ostringstream  quiet;
+          solver.solve(quiet);
+          optimum.iterations = solver.getAlgorithmState()->iter;
+        }
       else
         optimum.iterations = 0;
 
@@ -374,12 +375,9 @@ namespace FuzzyContact
     std::vector<unsigned int> order(alpha.size());
     for (unsigned int l = 0; l < alpha.size(); ++l)
       order[l] = l;
-    std::sort(order.begin(),
-              order.end(),
-              [&](unsigned int a, unsigned int b)
-              {
-                return alpha[a] > alpha[b];
-              });
+    std::sort(order.begin(), order.end(), [&](unsigned int a, unsigned int b) {
+      return alpha[a] > alpha[b];
+    });
 
     // The nominal point: centre of the core.
     VectorType centre(n);
@@ -397,164 +395,166 @@ namespace FuzzyContact
     // One chain per output and direction; chains are dealt to the ranks.
     std::vector<std::pair<unsigned int, ChainResult>> mine;
     for (unsigned int chain = rank; chain < 2 * n_outputs; chain += n_ranks)
-    {
-      const unsigned int k     = chain / 2;
-      const bool         upper = chain % 2;
-      const double       sign  = upper ? -1. : 1.;
-      const double scale = std::abs(nominal[k]) > 0 ? std::abs(nominal[k]) : 1.;
-      const std::string what =
-        output_names[k] + (upper ? " (upper bound)" : " (lower bound)");
-
-      ChainResult result;
-      result.value.resize(alpha.size());
-      result.argument.resize(alpha.size());
-      VectorType              start = centre;
-      std::vector<VectorType> gradients;
-      for (const unsigned int l : order)
       {
-        const auto [lo, hi] = normalisation.box(parameters, alpha[l]);
-        OutputObjective objective(cache,
-                                  normalisation,
-                                  k,
-                                  sign,
-                                  scale,
-                                  settings.finite_difference_step,
-                                  lo,
-                                  hi);
-        LocalOptimum    best = minimise(objective, start, lo, hi, settings);
+        const unsigned int k     = chain / 2;
+        const bool         upper = chain % 2;
+        const double       sign  = upper ? -1. : 1.;
+        const double       scale =
+          std::abs(nominal[k]) > 0 ? std::abs(nominal[k]) : 1.;
+        const std::string what =
+          output_names[k] + (upper ? " (upper bound)" : " (lower bound)");
 
-        // Is the response monotone here? An interior optimum, or a
-        // vertex better than the local optimum, says it is not.
-        // A coordinate strictly inside its interval is an interior
-        // optimum only if both ends of the interval are worse; if one
-        // end is as good, the response is flat in that parameter (it
-        // does not depend on it there) and the optimum moves to that end.
-        std::vector<std::string> findings;
-        const double noise = 1e-12 * std::max(1., std::abs(best.value));
+        ChainResult result;
+        result.value.resize(alpha.size());
+        result.argument.resize(alpha.size());
+        VectorType              start = centre;
+        std::vector<VectorType> gradients;
+        for (const unsigned int l : order)
+          {
+            const auto [lo, hi] = normalisation.box(parameters, alpha[l]);
+            OutputObjective objective(cache,
+                                      normalisation,
+                                      k,
+                                      sign,
+                                      scale,
+                                      settings.finite_difference_step,
+                                      lo,
+                                      hi);
+            LocalOptimum    best = minimise(objective, start, lo, hi, settings);
+
+            // Is the response monotone here? An interior optimum, or a
+            // vertex better than the local optimum, says it is not.
+            // A coordinate strictly inside its interval is an interior
+            // optimum only if both ends of the interval are worse; if one
+            // end is as good, the response is flat in that parameter (it
+            // does not depend on it there) and the optimum moves to that end.
+            std::vector<std::string> findings;
+            const double noise = 1e-12 * std::max(1., std::abs(best.value));
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                const double width = hi[i] - lo[i];
+                if (width <= 0)
+                  continue;
+                const double tol = settings.interior_tolerance * width;
+                if (best.x[i] <= lo[i] + tol || best.x[i] >= hi[i] - tol)
+                  continue;
+                VectorType at_end = best.x;
+                at_end[i]         = lo[i];
+                const double f_lo = objective.at(at_end);
+                at_end[i]         = hi[i];
+                const double f_hi = objective.at(at_end);
+                if (std::min(f_lo, f_hi) <= best.value + noise)
+                  {
+                    best.x[i]  = f_lo <= f_hi ? lo[i] : hi[i];
+                    best.value = std::min(best.value, std::min(f_lo, f_hi));
+                    continue;
+                  }
+                findings.push_back("optimum inside the interval of parameter " +
+                                   std::to_string(normalisation.free[i] + 1) +
+                                   " (at " +
+                                   format(normalisation.parameters(
+                                     best.x)[normalisation.free[i]]) +
+                                   ")");
+              }
+            double best_vertex = std::numeric_limits<double>::infinity();
+            if (n > 0 && n < 20)
+              for (unsigned long corner = 0; corner < (1ul << n); ++corner)
+                {
+                  VectorType v(n);
+                  for (unsigned int i = 0; i < n; ++i)
+                    v[i] = (corner >> i) & 1 ? hi[i] : lo[i];
+                  best_vertex = std::min(best_vertex, objective.at(v));
+                }
+            if (best_vertex < best.value - 1e-12 * std::abs(best.value))
+              findings.push_back("a vertex of the box is better than the "
+                                 "local optimum");
+            gradients.push_back(best.gradient);
+
+            if (!findings.empty())
+              {
+                std::string note = what + ", alpha = " + format(alpha[l]) +
+                                   ": non-monotone response (";
+                for (unsigned int f = 0; f < findings.size(); ++f)
+                  note += (f ? "; " : "") + findings[f];
+                note += ")";
+                if (settings.fallback)
+                  {
+                    // Multi-start from every vertex and the centre.
+                    std::vector<VectorType> starts;
+                    for (unsigned long corner = 0;
+                         n < 20 && corner < (1ul << n);
+                         ++corner)
+                      {
+                        VectorType v(n);
+                        for (unsigned int i = 0; i < n; ++i)
+                          v[i] = (corner >> i) & 1 ? hi[i] : lo[i];
+                        starts.push_back(v);
+                      }
+                    VectorType mid(n);
+                    for (unsigned int i = 0; i < n; ++i)
+                      mid[i] = 0.5 * (lo[i] + hi[i]);
+                    starts.push_back(mid);
+                    const double before = best.value;
+                    for (const VectorType &s : starts)
+                      {
+                        LocalOptimum candidate =
+                          minimise(objective, s, lo, hi, settings);
+                        if (candidate.value < best.value)
+                          best = candidate;
+                      }
+                    note +=
+                      "; fallback: multi-start from " +
+                      std::to_string(starts.size()) +
+                      " points (vertices and centre)" +
+                      (best.value < before ? ", which improved the "
+                                             "bound to " +
+                                               format(sign * best.value * scale)
+                                           : ", which confirmed it");
+                  }
+                else
+                  note += "; no fallback (disabled)";
+                result.notes.push_back(note);
+              }
+
+            result.value[l]    = sign * best.value * scale;
+            result.argument[l] = normalisation.parameters(best.x);
+            start              = best.x;
+          }
+
+        // A sensitivity that changes sign between the optima of the levels.
         for (unsigned int i = 0; i < n; ++i)
-        {
-          const double width = hi[i] - lo[i];
-          if (width <= 0)
-            continue;
-          const double tol = settings.interior_tolerance * width;
-          if (best.x[i] <= lo[i] + tol || best.x[i] >= hi[i] - tol)
-            continue;
-          VectorType at_end = best.x;
-          at_end[i]         = lo[i];
-          const double f_lo = objective.at(at_end);
-          at_end[i]         = hi[i];
-          const double f_hi = objective.at(at_end);
-          if (std::min(f_lo, f_hi) <= best.value + noise)
           {
-            best.x[i]  = f_lo <= f_hi ? lo[i] : hi[i];
-            best.value = std::min(best.value, std::min(f_lo, f_hi));
-            continue;
+            bool positive = false, negative = false;
+            for (const VectorType &g : gradients)
+              {
+                positive = positive || g[i] > 1e-8;
+                negative = negative || g[i] < -1e-8;
+              }
+            if (positive && negative)
+              result.notes.push_back(
+                what + ": the sensitivity to parameter " +
+                std::to_string(normalisation.free[i] + 1) +
+                " changes sign between alpha levels (non-monotone response)");
           }
-          findings.push_back(
-            "optimum inside the interval of parameter " +
-            std::to_string(normalisation.free[i] + 1) + " (at " +
-            format(normalisation.parameters(best.x)[normalisation.free[i]]) +
-            ")");
-        }
-        double best_vertex = std::numeric_limits<double>::infinity();
-        if (n > 0 && n < 20)
-          for (unsigned long corner = 0; corner < (1ul << n); ++corner)
-          {
-            VectorType v(n);
-            for (unsigned int i = 0; i < n; ++i)
-              v[i] = (corner >> i) & 1 ? hi[i] : lo[i];
-            best_vertex = std::min(best_vertex, objective.at(v));
-          }
-        if (best_vertex < best.value - 1e-12 * std::abs(best.value))
-          findings.push_back("a vertex of the box is better than the "
-                             "local optimum");
-        gradients.push_back(best.gradient);
-
-        if (!findings.empty())
-        {
-          std::string note = what + ", alpha = " + format(alpha[l]) +
-                             ": non-monotone response (";
-          for (unsigned int f = 0; f < findings.size(); ++f)
-            note += (f ? "; " : "") + findings[f];
-          note += ")";
-          if (settings.fallback)
-          {
-            // Multi-start from every vertex and the centre.
-            std::vector<VectorType> starts;
-            for (unsigned long corner = 0; n < 20 && corner < (1ul << n);
-                 ++corner)
-            {
-              VectorType v(n);
-              for (unsigned int i = 0; i < n; ++i)
-                v[i] = (corner >> i) & 1 ? hi[i] : lo[i];
-              starts.push_back(v);
-            }
-            VectorType mid(n);
-            for (unsigned int i = 0; i < n; ++i)
-              mid[i] = 0.5 * (lo[i] + hi[i]);
-            starts.push_back(mid);
-            const double before = best.value;
-            for (const VectorType &s : starts)
-            {
-              LocalOptimum candidate = minimise(objective, s, lo, hi, settings);
-              if (candidate.value < best.value)
-                best = candidate;
-            }
-            note += "; fallback: multi-start from " +
-                    std::to_string(starts.size()) +
-                    " points (vertices and centre)" +
-                    (best.value < before ? ", which improved the "
-                                           "bound to " +
-                                             format(sign * best.value * scale)
-                                         : ", which confirmed it");
-          }
-          else
-            note += "; no fallback (disabled)";
-          result.notes.push_back(note);
-        }
-
-        result.value[l]    = sign * best.value * scale;
-        result.argument[l] = normalisation.parameters(best.x);
-        start              = best.x;
+        mine.emplace_back(chain, std::move(result));
       }
-
-      // A sensitivity that changes sign between the optima of the levels.
-      for (unsigned int i = 0; i < n; ++i)
-      {
-        bool positive = false, negative = false;
-        for (const VectorType &g : gradients)
-        {
-          positive = positive || g[i] > 1e-8;
-          negative = negative || g[i] < -1e-8;
-        }
-        if (positive && negative)
-          result.notes.push_back(
-            what + ": the sensitivity to parameter " +
-            std::to_string(normalisation.free[i] + 1) +
-            " changes sign between alpha levels (non-monotone response)");
-      }
-      mine.emplace_back(chain, std::move(result));
-    }
 
     // Gather the chains of all ranks.
     std::vector<std::pair<unsigned int, ChainResult>> all = mine;
     unsigned long n_evaluations = cache.n_evaluations();
     double        wall_time     = timer.wall_time();
     if (parallel)
-    {
-      all.clear();
-      for (auto &part : Utilities::MPI::all_gather(comm, mine))
-        for (auto &c : part)
-          all.push_back(std::move(c));
-      n_evaluations = Utilities::MPI::sum(n_evaluations, comm);
-      wall_time     = Utilities::MPI::max(wall_time, comm);
-    }
-    std::sort(all.begin(),
-              all.end(),
-              [](const auto &a, const auto &b)
-              {
-                return a.first < b.first;
-              });
+      {
+        all.clear();
+        for (auto &part : Utilities::MPI::all_gather(comm, mine))
+          for (auto &c : part)
+            all.push_back(std::move(c));
+        n_evaluations = Utilities::MPI::sum(n_evaluations, comm);
+        wall_time     = Utilities::MPI::max(wall_time, comm);
+      }
+    std::sort(all.begin(), all.end(), [](const auto &a, const auto &b) {
+      return a.first < b.first;
+    });
 
     FuzzyOutputBounds result;
     result.alpha = alpha;
@@ -563,22 +563,22 @@ namespace FuzzyContact
                          std::vector<std::vector<double>>(alpha.size()));
     result.argmax = result.argmin;
     for (const auto &[chain, r] : all)
-    {
-      const unsigned int k = chain / 2;
-      for (unsigned int l = 0; l < alpha.size(); ++l)
-        if (chain % 2)
-        {
-          result.bounds[k][l].upper = r.value[l];
-          result.argmax[k][l]       = r.argument[l];
-        }
-        else
-        {
-          result.bounds[k][l].lower = r.value[l];
-          result.argmin[k][l]       = r.argument[l];
-        }
-      for (const std::string &note : r.notes)
-        result.notes.push_back(note);
-    }
+      {
+        const unsigned int k = chain / 2;
+        for (unsigned int l = 0; l < alpha.size(); ++l)
+          if (chain % 2)
+            {
+              result.bounds[k][l].upper = r.value[l];
+              result.argmax[k][l]       = r.argument[l];
+            }
+          else
+            {
+              result.bounds[k][l].lower = r.value[l];
+              result.argmin[k][l]       = r.argument[l];
+            }
+        for (const std::string &note : r.notes)
+          result.notes.push_back(note);
+      }
     result.n_evaluations = n_evaluations;
     result.wall_time     = wall_time;
     return result;

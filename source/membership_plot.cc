@@ -39,18 +39,18 @@ namespace FuzzyContact
     std::vector<std::vector<unsigned int>> blocks(panels.size());
     for (unsigned int p = 0; p < panels.size(); ++p)
       for (const MembershipCurve &curve : panels[p].curves)
-      {
-        data << "# " << panels[p].title << ": " << curve.label << "\n";
-        const unsigned int n = curve.alpha.size();
-        for (unsigned int l = 0; l < n; ++l)
-          data << curve.bounds[l].lower / panels[p].scale << " "
-               << curve.alpha[l] << "\n";
-        for (unsigned int l = n; l-- > 0;)
-          data << curve.bounds[l].upper / panels[p].scale << " "
-               << curve.alpha[l] << "\n";
-        data << "\n\n";
-        blocks[p].push_back(block++);
-      }
+        {
+          data << "# " << panels[p].title << ": " << curve.label << "\n";
+          const unsigned int n = curve.alpha.size();
+          for (unsigned int l = 0; l < n; ++l)
+            data << curve.bounds[l].lower / panels[p].scale << " "
+                 << curve.alpha[l] << "\n";
+          for (unsigned int l = n; l-- > 0;)
+            data << curve.bounds[l].upper / panels[p].scale << " "
+                 << curve.alpha[l] << "\n";
+          data << "\n\n";
+          blocks[p].push_back(block++);
+        }
 
     const unsigned int columns = panels.size() > 1 ? 2 : 1;
     const unsigned int rows    = (panels.size() + columns - 1) / columns;
@@ -64,17 +64,17 @@ namespace FuzzyContact
            << "set yrange [0:1.05]\nset ylabel \"membership\"\n"
            << "set grid\nset key top left box opaque font \",9\"\n";
     for (unsigned int p = 0; p < panels.size(); ++p)
-    {
-      script << "set title " << quoted(panels[p].title) << "\n"
-             << "set xlabel " << quoted(panels[p].unit) << "\n"
-             << "plot ";
-      for (unsigned int c = 0; c < panels[p].curves.size(); ++c)
-        script << (c ? ", \\\n     " : "") << quoted(basename + ".dat")
-               << " index " << blocks[p][c] << " with "
-               << panels[p].curves[c].style << " title "
-               << quoted(panels[p].curves[c].label);
-      script << "\n";
-    }
+      {
+        script << "set title " << quoted(panels[p].title) << "\n"
+               << "set xlabel " << quoted(panels[p].unit) << "\n"
+               << "plot ";
+        for (unsigned int c = 0; c < panels[p].curves.size(); ++c)
+          script << (c ? ", \\\n     " : "") << quoted(basename + ".dat")
+                 << " index " << blocks[p][c] << " with "
+                 << panels[p].curves[c].style << " title "
+                 << quoted(panels[p].curves[c].label);
+        script << "\n";
+      }
     script << "unset multiplot\n";
 
     files.add(basename + ".dat", data.str());
@@ -97,22 +97,22 @@ namespace FuzzyContact
     const auto png    = folder / (basename + ".png");
     bool       ok     = false;
     if (status == 0 && fs::exists(png) && fs::file_size(png) > 0)
-    {
-      std::ifstream      in(png, std::ios::binary);
-      std::ostringstream bytes;
-      bytes << in.rdbuf();
-      files.add(basename + ".png", bytes.str());
-      ok = true;
-    }
+      {
+        std::ifstream      in(png, std::ios::binary);
+        std::ostringstream bytes;
+        bytes << in.rdbuf();
+        files.add(basename + ".png", bytes.str());
+        ok = true;
+      }
     else
-    {
-      std::ifstream log(folder / "gnuplot.log");
-      std::string   first_line;
-      std::getline(log, first_line);
-      message = "gnuplot did not draw " + basename +
-                ".png (is Debian's gnuplot-nox installed?)" +
-                (first_line.empty() ? "" : ": " + first_line);
-    }
+      {
+        std::ifstream log(folder / "gnuplot.log");
+        std::string   first_line;
+        std::getline(log, first_line);
+        message = "gnuplot did not draw " + basename +
+                  ".png (is Debian's gnuplot-nox installed?)" +
+                  (first_line.empty() ? "" : ": " + first_line);
+      }
     std::error_code ignore;
     fs::remove_all(folder, ignore);
     return ok;

@@ -98,17 +98,17 @@ namespace FuzzyContact
                            std::to_string(nominal.size()) + "."));
     for (const auto &cluster : reanalysis_clusters(nominal, cluster_gap))
       if (cluster.back() + 1 >= n_wanted)
-      {
-        AssertThrow(cluster.back() + 1 < nominal.size(),
-                    ExcMessage("modal reanalysis: the cluster of close "
-                               "eigenvalues that holds mode " +
-                               std::to_string(n_wanted) + " (" +
-                               describe_modes(nominal, cluster) +
-                               ") reaches the highest computed nominal mode; "
-                               "its partners may lie above. Compute more "
-                               "nominal modes."));
-        return cluster.back() + 1;
-      }
+        {
+          AssertThrow(cluster.back() + 1 < nominal.size(),
+                      ExcMessage("modal reanalysis: the cluster of close "
+                                 "eigenvalues that holds mode " +
+                                 std::to_string(n_wanted) + " (" +
+                                 describe_modes(nominal, cluster) +
+                                 ") reaches the highest computed nominal mode; "
+                                 "its partners may lie above. Compute more "
+                                 "nominal modes."));
+          return cluster.back() + 1;
+        }
     return n_wanted;
   }
 
@@ -153,16 +153,15 @@ namespace FuzzyContact
       std::iota(order.begin(), order.end(), 0);
       std::sort(order.begin(),
                 order.end(),
-                [&](unsigned int a, unsigned int b)
-                {
+                [&](unsigned int a, unsigned int b) {
                   return r.eigenvalues[a] < r.eigenvalues[b];
                 });
       ReanalysisResult sorted = r;
       for (unsigned int i = 0; i < order.size(); ++i)
-      {
-        sorted.eigenvalues[i] = r.eigenvalues[order[i]];
-        sorted.modes[i]       = r.modes[order[i]];
-      }
+        {
+          sorted.eigenvalues[i] = r.eigenvalues[order[i]];
+          sorted.modes[i]       = r.modes[order[i]];
+        }
       r = std::move(sorted);
     }
 
@@ -199,16 +198,16 @@ namespace FuzzyContact
     Residuals      result;
     Vector<double> Kx(K.m()), r(K.m()), z(K.m());
     for (unsigned int j = 0; j < modes.size(); ++j)
-    {
-      K.vmult(Kx, modes[j]);
-      M.vmult(r, modes[j]);
-      r.sadd(-eigenvalues[j], 1., Kx);
-      z = r;
-      K0_inverse.solve(z);
-      const double energy_norm = std::sqrt(std::max(modes[j] * Kx, 0.));
-      result.relative.push_back(r.l2_norm() / Kx.l2_norm());
-      result.energy.push_back(std::sqrt(std::max(r * z, 0.)) / energy_norm);
-    }
+      {
+        K.vmult(Kx, modes[j]);
+        M.vmult(r, modes[j]);
+        r.sadd(-eigenvalues[j], 1., Kx);
+        z = r;
+        K0_inverse.solve(z);
+        const double energy_norm = std::sqrt(std::max(modes[j] * Kx, 0.));
+        result.relative.push_back(r.l2_norm() / Kx.l2_norm());
+        result.energy.push_back(std::sqrt(std::max(r * z, 0.)) / energy_norm);
+      }
     return result;
   }
 
@@ -273,46 +272,47 @@ namespace FuzzyContact
   {
     const unsigned int n_p = model.n_parameters();
     for (const auto &modes : reanalysis_clusters(nominal, cluster_gap))
-    {
-      const EigenDerivatives derivatives(model, nominal, modes, cluster_gap);
-      Cluster                c;
-      c.modes = modes;
-      if (modes.size() == 1)
-        c.derivatives = derivatives.derivatives(1);
-      else
       {
-        const EigenTaylorCoefficients taylor =
-          derivatives.taylor_coefficients(identity(n_p), 1, false);
-        const unsigned int m = modes.size();
-        for (unsigned int k = 0; k < n_p; ++k)
-        {
-          std::vector<unsigned int> e(n_p, 0);
-          e[k] = 1;
-          c.X.push_back(taylor.vectors[taylor.indices.index(e)]);
-          FullMatrix<double> PKP(m, m), PMP(m, m);
-          Vector<double>     product;
-          for (unsigned int j = 0; j < m; ++j)
+        const EigenDerivatives derivatives(model, nominal, modes, cluster_gap);
+        Cluster                c;
+        c.modes = modes;
+        if (modes.size() == 1)
+          c.derivatives = derivatives.derivatives(1);
+        else
           {
-            const Vector<double> &phi_j = nominal.modes[modes[j]];
-            for (const bool stiffness : {true, false})
-            {
-              std::vector<double> direction(n_p, 0.);
-              direction[k] = 1;
-              const bool nonzero =
-                stiffness ? model.stiffness_change(direction, phi_j, product)
-                          : model.mass_change(direction, phi_j, product);
-              if (nonzero)
-                for (unsigned int i = 0; i < m; ++i)
-                  (stiffness ? PKP : PMP)(i, j) =
-                    nominal.modes[modes[i]] * product;
-            }
+            const EigenTaylorCoefficients taylor =
+              derivatives.taylor_coefficients(identity(n_p), 1, false);
+            const unsigned int m = modes.size();
+            for (unsigned int k = 0; k < n_p; ++k)
+              {
+                std::vector<unsigned int> e(n_p, 0);
+                e[k] = 1;
+                c.X.push_back(taylor.vectors[taylor.indices.index(e)]);
+                FullMatrix<double> PKP(m, m), PMP(m, m);
+                Vector<double>     product;
+                for (unsigned int j = 0; j < m; ++j)
+                  {
+                    const Vector<double> &phi_j = nominal.modes[modes[j]];
+                    for (const bool stiffness : {true, false})
+                      {
+                        std::vector<double> direction(n_p, 0.);
+                        direction[k] = 1;
+                        const bool nonzero =
+                          stiffness
+                            ? model.stiffness_change(direction, phi_j, product)
+                            : model.mass_change(direction, phi_j, product);
+                        if (nonzero)
+                          for (unsigned int i = 0; i < m; ++i)
+                            (stiffness ? PKP : PMP)(i, j) =
+                              nominal.modes[modes[i]] * product;
+                      }
+                  }
+                c.PhiKPhi.push_back(PKP);
+                c.PhiMPhi.push_back(PMP);
+              }
           }
-          c.PhiKPhi.push_back(PKP);
-          c.PhiMPhi.push_back(PMP);
-        }
+        clusters.push_back(std::move(c));
       }
-      clusters.push_back(std::move(c));
-    }
   }
 
 
@@ -339,50 +339,50 @@ namespace FuzzyContact
     ReanalysisResult result;
     result.order = 1;
     for (const Cluster &c : clusters)
-    {
-      if (c.modes.size() == 1)
       {
-        double         lambda = nominal.eigenvalues[c.modes[0]];
-        Vector<double> phi    = nominal.modes[c.modes[0]];
-        for (unsigned int k = 0; k < n_p; ++k)
-        {
-          lambda += t[k] * c.derivatives.eigenvalue[k];
-          phi.add(t[k], c.derivatives.mode_shape[k]);
-        }
-        result.eigenvalues.push_back(lambda);
-        result.modes.push_back(std::move(phi));
-        continue;
-      }
-      // A cluster: first-order degenerate perturbation.
-      const unsigned int       m = c.modes.size();
-      LAPACKFullMatrix<double> A(m, m), B(m, m);
-      for (unsigned int i = 0; i < m; ++i)
-      {
-        A(i, i) = nominal.eigenvalues[c.modes[i]];
-        B(i, i) = 1;
-      }
-      for (unsigned int k = 0; k < n_p; ++k)
-        for (unsigned int i = 0; i < m; ++i)
-          for (unsigned int j = 0; j < m; ++j)
+        if (c.modes.size() == 1)
           {
-            A(i, j) += t[k] * c.PhiKPhi[k](i, j);
-            B(i, j) += t[k] * c.PhiMPhi[k](i, j);
+            double         lambda = nominal.eigenvalues[c.modes[0]];
+            Vector<double> phi    = nominal.modes[c.modes[0]];
+            for (unsigned int k = 0; k < n_p; ++k)
+              {
+                lambda += t[k] * c.derivatives.eigenvalue[k];
+                phi.add(t[k], c.derivatives.mode_shape[k]);
+              }
+            result.eigenvalues.push_back(lambda);
+            result.modes.push_back(std::move(phi));
+            continue;
           }
-      std::vector<Vector<double>> y(m, Vector<double>(m));
-      A.compute_generalized_eigenvalues_symmetric(B, y);
-      for (unsigned int s = 0; s < m; ++s)
-      {
-        result.eigenvalues.push_back(A.eigenvalue(s).real());
-        Vector<double> phi(nominal.modes[0].size());
-        for (unsigned int j = 0; j < m; ++j)
-        {
-          phi.add(y[s][j], nominal.modes[c.modes[j]]);
-          for (unsigned int k = 0; k < n_p; ++k)
-            phi.add(t[k] * y[s][j], c.X[k][j]);
-        }
-        result.modes.push_back(std::move(phi));
+        // A cluster: first-order degenerate perturbation.
+        const unsigned int       m = c.modes.size();
+        LAPACKFullMatrix<double> A(m, m), B(m, m);
+        for (unsigned int i = 0; i < m; ++i)
+          {
+            A(i, i) = nominal.eigenvalues[c.modes[i]];
+            B(i, i) = 1;
+          }
+        for (unsigned int k = 0; k < n_p; ++k)
+          for (unsigned int i = 0; i < m; ++i)
+            for (unsigned int j = 0; j < m; ++j)
+              {
+                A(i, j) += t[k] * c.PhiKPhi[k](i, j);
+                B(i, j) += t[k] * c.PhiMPhi[k](i, j);
+              }
+        std::vector<Vector<double>> y(m, Vector<double>(m));
+        A.compute_generalized_eigenvalues_symmetric(B, y);
+        for (unsigned int s = 0; s < m; ++s)
+          {
+            result.eigenvalues.push_back(A.eigenvalue(s).real());
+            Vector<double> phi(nominal.modes[0].size());
+            for (unsigned int j = 0; j < m; ++j)
+              {
+                phi.add(y[s][j], nominal.modes[c.modes[j]]);
+                for (unsigned int k = 0; k < n_p; ++k)
+                  phi.add(t[k] * y[s][j], c.X[k][j]);
+              }
+            result.modes.push_back(std::move(phi));
+          }
       }
-    }
     sort_pairs(result);
     return result;
   }
@@ -434,22 +434,22 @@ namespace FuzzyContact
     // r_1 = K0^{-1} M(t) phi0 for every mode, then the series terms, added
     // term by term so that lower terms come first.
     for (unsigned int j = 0; j < n_modes; ++j)
-    {
-      M.vmult(r[j], nominal.modes[j]);
-      K0_inverse.solve(r[j]);
-      T.add(r[j], 0.);
-    }
-    for (unsigned int i = 2; i <= order + 1; ++i)
-      for (unsigned int j = 0; j < n_modes; ++j)
       {
-        // r <- -K0^{-1} Delta K r
-        if (!model.stiffness_change(t, r[j], tmp))
-          continue; // no stiffness change: the series stops at r_1
-        tmp *= -1.;
-        K0_inverse.solve(tmp);
-        r[j] = tmp;
+        M.vmult(r[j], nominal.modes[j]);
+        K0_inverse.solve(r[j]);
         T.add(r[j], 0.);
       }
+    for (unsigned int i = 2; i <= order + 1; ++i)
+      for (unsigned int j = 0; j < n_modes; ++j)
+        {
+          // r <- -K0^{-1} Delta K r
+          if (!model.stiffness_change(t, r[j], tmp))
+            continue; // no stiffness change: the series stops at r_1
+          tmp *= -1.;
+          K0_inverse.solve(tmp);
+          r[j] = tmp;
+          T.add(r[j], 0.);
+        }
     ReanalysisResult result = rayleigh_ritz(K, M, T, n_modes);
     result.order            = order;
     return result;

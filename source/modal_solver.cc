@@ -93,20 +93,20 @@ namespace FuzzyContact
   {
     std::vector<std::vector<unsigned int>> groups;
     for (unsigned int j = 0; j < eigenvalues.size(); ++j)
-    {
-      if (!groups.empty())
       {
-        const double previous = eigenvalues[groups.back().back()];
-        if (std::abs(eigenvalues[j] - previous) <=
-            relative_gap *
-              std::max(std::abs(eigenvalues[j]), std::abs(previous)))
-        {
-          groups.back().push_back(j);
-          continue;
-        }
+        if (!groups.empty())
+          {
+            const double previous = eigenvalues[groups.back().back()];
+            if (std::abs(eigenvalues[j] - previous) <=
+                relative_gap *
+                  std::max(std::abs(eigenvalues[j]), std::abs(previous)))
+              {
+                groups.back().push_back(j);
+                continue;
+              }
+          }
+        groups.push_back({j});
       }
-      groups.push_back({j});
-    }
     return groups;
   }
 
@@ -120,13 +120,14 @@ namespace FuzzyContact
     std::vector<double> residuals;
     Vector<double>      Kx(K.m()), Mx(M.m());
     for (unsigned int j = 0; j < modes.size(); ++j)
-    {
-      K.vmult(Kx, modes[j]);
-      M.vmult(Mx, modes[j]);
-      const double norm_Kx = Kx.l2_norm();
-      Kx.add(-eigenvalues[j], Mx);
-      residuals.push_back(norm_Kx > 0 ? Kx.l2_norm() / norm_Kx : Kx.l2_norm());
-    }
+      {
+        K.vmult(Kx, modes[j]);
+        M.vmult(Mx, modes[j]);
+        const double norm_Kx = Kx.l2_norm();
+        Kx.add(-eigenvalues[j], Mx);
+        residuals.push_back(norm_Kx > 0 ? Kx.l2_norm() / norm_Kx
+                                        : Kx.l2_norm());
+      }
     return residuals;
   }
 
@@ -158,19 +159,19 @@ namespace FuzzyContact
       shifted.add(-parameters.shift, M);
     SparseDirectUMFPACK inverse;
     try
-    {
-      inverse.initialize(shifted);
-    }
+      {
+        inverse.initialize(shifted);
+      }
     catch (const ExceptionBase &)
-    {
-      std::ostringstream message;
-      message << what << ": K - sigma M is singular at the shift sigma = "
-              << parameters.shift
-              << ". An unclamped component has rigid-body modes at zero "
-                 "frequency: clamp it, or set a negative 'shift' in "
-                 "'Modal analysis'.";
-      AssertThrow(false, ExcMessage(message.str()));
-    }
+      {
+        std::ostringstream message;
+        message << what << ": K - sigma M is singular at the shift sigma = "
+                << parameters.shift
+                << ". An unclamped component has rigid-body modes at zero "
+                   "frequency: clamp it, or set a negative 'shift' in "
+                   "'Modal analysis'.";
+        AssertThrow(false, ExcMessage(message.str()));
+      }
 
     std::vector<std::complex<double>> lambda(n_modes);
     std::vector<Vector<double>>       x(n_modes, Vector<double>(n));
@@ -185,75 +186,72 @@ namespace FuzzyContact
     if (parameters.shift != 0)
       arpack.set_shift(parameters.shift);
     try
-    {
-      arpack.solve(K, M, inverse, lambda, x, n_modes);
-    }
+      {
+        arpack.solve(K, M, inverse, lambda, x, n_modes);
+      }
     catch (const ExceptionBase &e)
-    {
-      std::ostringstream message;
-      message << what << ": ARPACK did not converge to " << n_modes
-              << " eigenpairs (tolerance " << parameters.tolerance
-              << "): " << Input::message_of(e);
-      AssertThrow(false, ExcMessage(message.str()));
-    }
+      {
+        std::ostringstream message;
+        message << what << ": ARPACK did not converge to " << n_modes
+                << " eigenpairs (tolerance " << parameters.tolerance
+                << "): " << Input::message_of(e);
+        AssertThrow(false, ExcMessage(message.str()));
+      }
 
     std::vector<unsigned int> order(n_modes);
     std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(),
-              order.end(),
-              [&](unsigned int a, unsigned int b)
-              {
-                return lambda[a].real() < lambda[b].real();
-              });
+    std::sort(order.begin(), order.end(), [&](unsigned int a, unsigned int b) {
+      return lambda[a].real() < lambda[b].real();
+    });
 
     // UMFPACK factorises a singular K without complaint (round-off leaves
     // tiny pivots), and the rigid-body modes then come out as eigenvalues at
     // the round-off level of the largest ones. Refuse those: they are not
     // vibration modes of a supported structure.
     if (parameters.shift == 0)
-    {
-      double lambda_scale = 0;
-      for (unsigned int i = 0; i < n; ++i)
-        if (M.diag_element(i) > 0)
-          lambda_scale =
-            std::max(lambda_scale, K.diag_element(i) / M.diag_element(i));
-      const double zero =
-        1e3 * std::numeric_limits<double>::epsilon() * lambda_scale;
-      for (const unsigned int j : order)
-        if (lambda[j].real() < zero)
-        {
-          std::ostringstream message;
-          message << what << ": K - sigma M is singular at the shift "
-                  << "sigma = 0: there are modes at zero frequency "
-                  << "(lambda = " << lambda[j].real()
-                  << "), the rigid-body motions of an unclamped "
-                     "component. Clamp it, or set a negative 'shift' in "
-                     "'Modal analysis'.";
-          AssertThrow(false, ExcMessage(message.str()));
-        }
-    }
+      {
+        double lambda_scale = 0;
+        for (unsigned int i = 0; i < n; ++i)
+          if (M.diag_element(i) > 0)
+            lambda_scale =
+              std::max(lambda_scale, K.diag_element(i) / M.diag_element(i));
+        const double zero =
+          1e3 * std::numeric_limits<double>::epsilon() * lambda_scale;
+        for (const unsigned int j : order)
+          if (lambda[j].real() < zero)
+            {
+              std::ostringstream message;
+              message << what << ": K - sigma M is singular at the shift "
+                      << "sigma = 0: there are modes at zero frequency "
+                      << "(lambda = " << lambda[j].real()
+                      << "), the rigid-body motions of an unclamped "
+                         "component. Clamp it, or set a negative 'shift' in "
+                         "'Modal analysis'.";
+              AssertThrow(false, ExcMessage(message.str()));
+            }
+      }
 
     ModalBasis     basis;
     Vector<double> Mx(n);
     for (const unsigned int j : order)
-    {
-      Vector<double> &phi = x[j];
-      M.vmult(Mx, phi);
-      const double mass = phi * Mx;
-      AssertThrow(mass > 0 && std::isfinite(mass),
-                  ExcMessage(what + ": ARPACK returned a mode with "
-                                    "non-positive modal mass."));
-      phi /= std::sqrt(mass);
-      // Sign convention: the entry of largest magnitude is positive.
-      unsigned int imax = 0;
-      for (unsigned int i = 1; i < n; ++i)
-        if (std::abs(phi[i]) > std::abs(phi[imax]))
-          imax = i;
-      if (phi[imax] < 0)
-        phi *= -1.;
-      basis.eigenvalues.push_back(lambda[j].real());
-      basis.modes.push_back(std::move(phi));
-    }
+      {
+        Vector<double> &phi = x[j];
+        M.vmult(Mx, phi);
+        const double mass = phi * Mx;
+        AssertThrow(mass > 0 && std::isfinite(mass),
+                    ExcMessage(what + ": ARPACK returned a mode with "
+                                      "non-positive modal mass."));
+        phi /= std::sqrt(mass);
+        // Sign convention: the entry of largest magnitude is positive.
+        unsigned int imax = 0;
+        for (unsigned int i = 1; i < n; ++i)
+          if (std::abs(phi[i]) > std::abs(phi[imax]))
+            imax = i;
+        if (phi[imax] < 0)
+          phi *= -1.;
+        basis.eigenvalues.push_back(lambda[j].real());
+        basis.modes.push_back(std::move(phi));
+      }
     basis.residuals = relative_residuals(K, M, basis.eigenvalues, basis.modes);
     return basis;
   }
@@ -275,26 +273,26 @@ namespace FuzzyContact
       std::pow(2. * M_PI * parameters.cutoff_frequency, 2);
     unsigned int n_wanted = std::max(parameters.n_modes, 6u);
     while (true)
-    {
-      ModalBasis basis = solve_for(K, M, n_wanted, what);
-      if (basis.eigenvalues.back() > lambda_cut)
       {
-        unsigned int keep = 0;
-        while (keep < basis.size() && basis.eigenvalues[keep] <= lambda_cut)
-          ++keep;
-        AssertThrow(keep > 0,
-                    ExcMessage(what + ": no mode lies below the cutoff "
+        ModalBasis basis = solve_for(K, M, n_wanted, what);
+        if (basis.eigenvalues.back() > lambda_cut)
+          {
+            unsigned int keep = 0;
+            while (keep < basis.size() && basis.eigenvalues[keep] <= lambda_cut)
+              ++keep;
+            AssertThrow(keep > 0,
+                        ExcMessage(what + ": no mode lies below the cutoff "
+                                          "frequency."));
+            basis.eigenvalues.resize(keep);
+            basis.modes.resize(keep);
+            basis.residuals.resize(keep);
+            return basis;
+          }
+        AssertThrow(2 * (2 * n_wanted) + 2 < K.m(),
+                    ExcMessage(what + ": the model has too few degrees of "
+                                      "freedom to reach the cutoff "
                                       "frequency."));
-        basis.eigenvalues.resize(keep);
-        basis.modes.resize(keep);
-        basis.residuals.resize(keep);
-        return basis;
+        n_wanted *= 2;
       }
-      AssertThrow(2 * (2 * n_wanted) + 2 < K.m(),
-                  ExcMessage(what + ": the model has too few degrees of "
-                                    "freedom to reach the cutoff "
-                                    "frequency."));
-      n_wanted *= 2;
-    }
   }
 } // namespace FuzzyContact

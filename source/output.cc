@@ -36,12 +36,12 @@ namespace FuzzyContact
     std::error_code error;
     fs::rename(temporary, target, error);
     if (error)
-    {
-      fs::remove(temporary);
-      AssertThrow(false,
-                  ExcMessage("Cannot move the result into <" + filename +
-                             ">: " + error.message()));
-    }
+      {
+        fs::remove(temporary);
+        AssertThrow(false,
+                    ExcMessage("Cannot move the result into <" + filename +
+                               ">: " + error.message()));
+      }
   }
 
 
@@ -82,34 +82,34 @@ namespace FuzzyContact
   {
     if (argc != 2 || std::string(argv[1]) == "--help" ||
         std::string(argv[1]) == "-h")
-    {
-      std::cerr << "Usage: " << program_name << " <parameter file>\n"
-                << "  for instance: " << program_name << " prm/" << program_name
-                << ".prm" << std::endl;
-      return (argc == 2) ? 0 : 2;
-    }
+      {
+        std::cerr << "Usage: " << program_name << " <parameter file>\n"
+                  << "  for instance: " << program_name << " prm/"
+                  << program_name << ".prm" << std::endl;
+        return (argc == 2) ? 0 : 2;
+      }
     try
-    {
-      run(argv[1]);
-    }
+      {
+        run(argv[1]);
+      }
     catch (const ExceptionBase &e)
-    {
-      // Only the "additional information" of a deal.II exception is for the
-      // user; the source location and stack trace are for developers.
-      std::cerr << program_name << ": error: " << Input::message_of(e)
-                << std::endl;
-      return 1;
-    }
+      {
+        // Only the "additional information" of a deal.II exception is for the
+        // user; the source location and stack trace are for developers.
+        std::cerr << program_name << ": error: " << Input::message_of(e)
+                  << std::endl;
+        return 1;
+      }
     catch (const std::exception &e)
-    {
-      std::cerr << program_name << ": error: " << e.what() << std::endl;
-      return 1;
-    }
+      {
+        std::cerr << program_name << ": error: " << e.what() << std::endl;
+        return 1;
+      }
     catch (...)
-    {
-      std::cerr << program_name << ": error: unknown exception" << std::endl;
-      return 1;
-    }
+      {
+        std::cerr << program_name << ": error: unknown exception" << std::endl;
+        return 1;
+      }
     return 0;
   }
 } // namespace FuzzyContact

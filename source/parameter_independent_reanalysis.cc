@@ -38,8 +38,7 @@ namespace FuzzyContact
     AssertThrow(!parameter_names.empty(),
                 ExcMessage("modal reanalysis: no parameter is declared "
                            "variable."));
-    const auto scope = [timer](const std::string &stage)
-    {
+    const auto scope = [timer](const std::string &stage) {
       return timer ? std::make_unique<TimerOutput::Scope>(*timer, stage)
                    : std::unique_ptr<TimerOutput::Scope>();
     };
@@ -63,34 +62,34 @@ namespace FuzzyContact
     {
       const auto s = scope("reanalysis offline: Lee's derivatives");
       for (const auto &cluster : clusters_)
-      {
-        const EigenDerivatives derivatives(*model_,
-                                           nominal_,
-                                           cluster,
-                                           cluster_gap);
-        terms.push_back(
-          derivatives.taylor_coefficients(identity,
-                                          order,
-                                          /*mass_normalise=*/cluster.size() ==
-                                            1));
-      }
+        {
+          const EigenDerivatives derivatives(*model_,
+                                             nominal_,
+                                             cluster,
+                                             cluster_gap);
+          terms.push_back(
+            derivatives.taylor_coefficients(identity,
+                                            order,
+                                            /*mass_normalise=*/cluster.size() ==
+                                              1));
+        }
     }
 
     {
       const auto s = scope("reanalysis offline: orthonormalisation");
       basis_sizes_.clear();
       for (unsigned int p = 0; p <= order; ++p)
-      {
-        for (const EigenTaylorCoefficients &c : terms)
         {
-          const unsigned int first =
-            p == 0 ? 0 : c.indices.n_up_to_order(p - 1);
-          for (unsigned int a = first; a < c.indices.n_up_to_order(p); ++a)
-            for (const Vector<double> &v : c.vectors[a])
-              basis_->add(v);
+          for (const EigenTaylorCoefficients &c : terms)
+            {
+              const unsigned int first =
+                p == 0 ? 0 : c.indices.n_up_to_order(p - 1);
+              for (unsigned int a = first; a < c.indices.n_up_to_order(p); ++a)
+                for (const Vector<double> &v : c.vectors[a])
+                  basis_->add(v);
+            }
+          basis_sizes_.push_back(basis_->size());
         }
-        basis_sizes_.push_back(basis_->size());
-      }
       terms.clear();
     }
 
@@ -99,10 +98,11 @@ namespace FuzzyContact
       zone_K_.clear();
       zone_M_.clear();
       for (unsigned int z = 0; z < component.n_zones(); ++z)
-      {
-        zone_K_.push_back(basis_->project(component.zone_stiffness_matrix(z)));
-        zone_M_.push_back(basis_->project(component.zone_mass_matrix(z)));
-      }
+        {
+          zone_K_.push_back(
+            basis_->project(component.zone_stiffness_matrix(z)));
+          zone_M_.push_back(basis_->project(component.zone_mass_matrix(z)));
+        }
     }
   }
 
@@ -115,13 +115,13 @@ namespace FuzzyContact
   {
     FullMatrix<double> result(size, size);
     for (unsigned int z = 0; z < zone_projections.size(); ++z)
-    {
-      const FullMatrix<double> &P = zone_projections[z];
-      const double              v = zone_values[z];
-      for (unsigned int i = 0; i < size; ++i)
-        for (unsigned int j = 0; j < size; ++j)
-          result(i, j) += v * P(i, j);
-    }
+      {
+        const FullMatrix<double> &P = zone_projections[z];
+        const double              v = zone_values[z];
+        for (unsigned int i = 0; i < size; ++i)
+          for (unsigned int j = 0; j < size; ++j)
+            result(i, j) += v * P(i, j);
+      }
     return result;
   }
 
@@ -184,11 +184,11 @@ namespace FuzzyContact
     {
       double change = 0;
       for (unsigned int j = 0; j < a.eigenvalues.size(); ++j)
-      {
-        const double fa = std::sqrt(std::max(a.eigenvalues[j], 0.));
-        const double fb = std::sqrt(std::max(b.eigenvalues[j], 0.));
-        change          = std::max(change, std::abs(fa - fb) / fb);
-      }
+        {
+          const double fa = std::sqrt(std::max(a.eigenvalues[j], 0.));
+          const double fb = std::sqrt(std::max(b.eigenvalues[j], 0.));
+          change          = std::max(change, std::abs(fa - fb) / fb);
+        }
       return change;
     }
   } // namespace
@@ -200,8 +200,7 @@ namespace FuzzyContact
     const double               tolerance,
     const bool                 check_residuals) const
   {
-    const auto residual_estimate = [&](const ReanalysedModes &r)
-    {
+    const auto residual_estimate = [&](const ReanalysedModes &r) {
       const ResidualCheck::Residuals res = residuals(t, r);
       const double                   eta =
         *std::max_element(res.energy.begin(), res.energy.end());
@@ -209,27 +208,27 @@ namespace FuzzyContact
     };
     ReanalysedModes current = online(t, 1);
     for (unsigned int n = 1; n <= max_order_; ++n)
-    {
-      ReanalysedModes next;
-      double          estimate = -1;
-      if (n < max_order_)
       {
-        next     = online(t, n + 1);
-        estimate = relative_frequency_change(current, next);
+        ReanalysedModes next;
+        double          estimate = -1;
+        if (n < max_order_)
+          {
+            next     = online(t, n + 1);
+            estimate = relative_frequency_change(current, next);
+          }
+        if (check_residuals)
+          estimate = std::max(estimate, residual_estimate(current));
+        if (estimate >= 0)
+          current.estimated_error = estimate;
+        if (estimate >= 0 && estimate <= tolerance)
+          {
+            current.tolerance_met = true;
+            return current;
+          }
+        if (n == max_order_)
+          break;
+        current = std::move(next);
       }
-      if (check_residuals)
-        estimate = std::max(estimate, residual_estimate(current));
-      if (estimate >= 0)
-        current.estimated_error = estimate;
-      if (estimate >= 0 && estimate <= tolerance)
-      {
-        current.tolerance_met = true;
-        return current;
-      }
-      if (n == max_order_)
-        break;
-      current = std::move(next);
-    }
     current.tolerance_met = false;
     return current;
   }

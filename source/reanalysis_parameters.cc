@@ -20,13 +20,13 @@ namespace FuzzyContact
     {
       std::string::size_type begin = 0;
       while (true)
-      {
-        const std::string::size_type dot = trimmed.find('.', begin);
-        parts.push_back(trimmed.substr(begin, dot - begin));
-        if (dot == std::string::npos)
-          break;
-        begin = dot + 1;
-      }
+        {
+          const std::string::size_type dot = trimmed.find('.', begin);
+          parts.push_back(trimmed.substr(begin, dot - begin));
+          if (dot == std::string::npos)
+            break;
+          begin = dot + 1;
+        }
     }
     AssertThrow(parts.size() == 2 || parts.size() == 3,
                 ExcMessage(what +
@@ -53,26 +53,26 @@ namespace FuzzyContact
                              "> is not a reanalysis property; use E "
                              "(Young's modulus) or rho (density)."));
     if (parts.size() == 3)
-    {
-      p.zone     = parts[1];
-      bool found = false;
-      for (unsigned int z = 0; z < component.zones.size(); ++z)
-        if (component.zones[z].name == p.zone)
-        {
-          p.zones.push_back(z);
-          found = true;
-        }
-      if (!found)
       {
-        std::string known;
-        for (const MaterialZone &zone : component.zones)
-          known += (known.empty() ? "" : ", ") + zone.name;
-        AssertThrow(false,
-                    ExcMessage(what + ": component " + component.name +
-                               " has no zone called <" + p.zone +
-                               "> (its zones: " + known + ")."));
+        p.zone     = parts[1];
+        bool found = false;
+        for (unsigned int z = 0; z < component.zones.size(); ++z)
+          if (component.zones[z].name == p.zone)
+            {
+              p.zones.push_back(z);
+              found = true;
+            }
+        if (!found)
+          {
+            std::string known;
+            for (const MaterialZone &zone : component.zones)
+              known += (known.empty() ? "" : ", ") + zone.name;
+            AssertThrow(false,
+                        ExcMessage(what + ": component " + component.name +
+                                   " has no zone called <" + p.zone +
+                                   "> (its zones: " + known + ")."));
+          }
       }
-    }
     else
       for (unsigned int z = 0; z < component.zones.size(); ++z)
         p.zones.push_back(z);
@@ -114,47 +114,50 @@ namespace FuzzyContact
     // the names for a message are only gathered when something is wrong.
     std::vector<double> factor_E(n_zones, 1.), factor_rho(n_zones, 1.);
     for (unsigned int k = 0; k < parameters.size(); ++k)
-    {
-      AssertThrow(std::isfinite(t[k]),
-                  ExcMessage("reanalysis parameter <" + parameters[k].name +
-                             ">: its change must be a finite number."));
-      for (const unsigned int z : parameters[k].zones)
-        (parameters[k].property == MaterialProperty::youngs_modulus
-           ? factor_E
-           : factor_rho)[z] += t[k];
-    }
+      {
+        AssertThrow(std::isfinite(t[k]),
+                    ExcMessage("reanalysis parameter <" + parameters[k].name +
+                               ">: its change must be a finite number."));
+        for (const unsigned int z : parameters[k].zones)
+          (parameters[k].property == MaterialProperty::youngs_modulus
+             ? factor_E
+             : factor_rho)[z] += t[k];
+      }
     std::pair<std::vector<double>, std::vector<double>> result;
     result.first.resize(n_zones);
     result.second.resize(n_zones);
     for (unsigned int z = 0; z < n_zones; ++z)
-    {
-      for (const bool modulus : {true, false})
       {
-        const double factor = modulus ? factor_E[z] : factor_rho[z];
-        if (!(factor > 0))
-        {
-          const MaterialProperty property = modulus
-                                              ? MaterialProperty::youngs_modulus
-                                              : MaterialProperty::density;
-          std::string            names;
-          for (const ReanalysisParameter &p : parameters)
-            if (p.property == property &&
-                std::find(p.zones.begin(), p.zones.end(), z) != p.zones.end())
-              names += (names.empty() ? "" : ", ") + p.name;
-          std::ostringstream message;
-          message << "reanalysis parameter"
-                  << (names.find(',') != std::string::npos ? "s " : " ")
-                  << names << ": the change of " << std::showpos
-                  << 100. * (factor - 1.) << std::noshowpos << " % makes the "
-                  << (modulus ? "Young's modulus" : "density") << " of zone "
-                  << component.zones[z].name << " of component "
-                  << component.name << " non-positive.";
-          AssertThrow(false, ExcMessage(message.str()));
-        }
+        for (const bool modulus : {true, false})
+          {
+            const double factor = modulus ? factor_E[z] : factor_rho[z];
+            if (!(factor > 0))
+              {
+                const MaterialProperty property =
+                  modulus ? MaterialProperty::youngs_modulus
+                          : MaterialProperty::density;
+                std::string names;
+                for (const ReanalysisParameter &p : parameters)
+                  if (p.property == property &&
+                      std::find(p.zones.begin(), p.zones.end(), z) !=
+                        p.zones.end())
+                    names += (names.empty() ? "" : ", ") + p.name;
+                std::ostringstream message;
+                message << "reanalysis parameter"
+                        << (names.find(',') != std::string::npos ? "s " : " ")
+                        << names << ": the change of " << std::showpos
+                        << 100. * (factor - 1.) << std::noshowpos
+                        << " % makes the "
+                        << (modulus ? "Young's modulus" : "density")
+                        << " of zone " << component.zones[z].name
+                        << " of component " << component.name
+                        << " non-positive.";
+                AssertThrow(false, ExcMessage(message.str()));
+              }
+          }
+        result.first[z]  = nominal_moduli[z] * factor_E[z];
+        result.second[z] = nominal_densities[z] * factor_rho[z];
       }
-      result.first[z]  = nominal_moduli[z] * factor_E[z];
-      result.second[z] = nominal_densities[z] * factor_rho[z];
-    }
     return result;
   }
 
@@ -185,24 +188,24 @@ namespace FuzzyContact
     K_.resize(parameters_.size());
     M_.resize(parameters_.size());
     for (unsigned int k = 0; k < parameters_.size(); ++k)
-    {
-      const ReanalysisParameter &p = parameters_[k];
-      const bool modulus = p.property == MaterialProperty::youngs_modulus;
-      SparseMatrix<double> &target = modulus ? K_[k] : M_[k];
-      target.reinit(component.sparsity_pattern());
-      double weighted = 0, total_area = 0;
-      for (const unsigned int z : p.zones)
       {
-        const double value =
-          modulus ? nominal_moduli_[z] : nominal_densities_[z];
-        target.add(value,
-                   modulus ? component.zone_stiffness_matrix(z)
-                           : component.zone_mass_matrix(z));
-        weighted += value * area[z];
-        total_area += area[z];
+        const ReanalysisParameter &p = parameters_[k];
+        const bool modulus = p.property == MaterialProperty::youngs_modulus;
+        SparseMatrix<double> &target = modulus ? K_[k] : M_[k];
+        target.reinit(component.sparsity_pattern());
+        double weighted = 0, total_area = 0;
+        for (const unsigned int z : p.zones)
+          {
+            const double value =
+              modulus ? nominal_moduli_[z] : nominal_densities_[z];
+            target.add(value,
+                       modulus ? component.zone_stiffness_matrix(z)
+                               : component.zone_mass_matrix(z));
+            weighted += value * area[z];
+            total_area += area[z];
+          }
+        nominal_values_.push_back(weighted / total_area);
       }
-      nominal_values_.push_back(weighted / total_area);
-    }
   }
 
 
@@ -335,10 +338,10 @@ namespace FuzzyContact
     K.reinit(component_.sparsity_pattern());
     M.reinit(component_.sparsity_pattern());
     for (unsigned int z = 0; z < component_.n_zones(); ++z)
-    {
-      K.add(materials.first[z], component_.zone_stiffness_matrix(z));
-      M.add(materials.second[z], component_.zone_mass_matrix(z));
-    }
+      {
+        K.add(materials.first[z], component_.zone_stiffness_matrix(z));
+        M.add(materials.second[z], component_.zone_mass_matrix(z));
+      }
   }
 
 
@@ -355,17 +358,17 @@ namespace FuzzyContact
     Vector<double> tmp;
     for (unsigned int k = 0; k < parameters_.size(); ++k)
       if (c[k] != 0 && parameters_[k].property == property)
-      {
-        if (c[k] == 1)
-          matrices[k].vmult_add(dst, x);
-        else
         {
-          tmp.reinit(x.size(), /*omit_zeroing_entries=*/true);
-          matrices[k].vmult(tmp, x);
-          dst.add(c[k], tmp);
+          if (c[k] == 1)
+            matrices[k].vmult_add(dst, x);
+          else
+            {
+              tmp.reinit(x.size(), /*omit_zeroing_entries=*/true);
+              matrices[k].vmult(tmp, x);
+              dst.add(c[k], tmp);
+            }
+          any = true;
         }
-        any = true;
-      }
     return any;
   }
 

@@ -33,20 +33,20 @@ namespace FuzzyContact
 
     // Two passes of classical Gram-Schmidt: c = T^T M w = (M T)^T w.
     for (unsigned int pass = 0; pass < 2; ++pass)
-    {
-      std::vector<double> c(T.size());
-      for (unsigned int i = 0; i < T.size(); ++i)
-        c[i] = MT[i] * w;
-      for (unsigned int i = 0; i < T.size(); ++i)
-        w.add(-c[i], T[i]);
-    }
+      {
+        std::vector<double> c(T.size());
+        for (unsigned int i = 0; i < T.size(); ++i)
+          c[i] = MT[i] * w;
+        for (unsigned int i = 0; i < T.size(); ++i)
+          w.add(-c[i], T[i]);
+      }
     mass->vmult(Mw, w);
     const double norm_after = std::sqrt(std::max(w * Mw, 0.));
     if (!(norm_after > tolerance_ * std::max(norm_before, reference)))
-    {
-      ++n_dropped_;
-      return false;
-    }
+      {
+        ++n_dropped_;
+        return false;
+      }
     w /= norm_after;
     Mw /= norm_after;
     T.push_back(std::move(w));
@@ -99,11 +99,11 @@ namespace FuzzyContact
     FullMatrix<double> result(n, n);
     Vector<double>     At(T.empty() ? 0 : T[0].size());
     for (unsigned int j = 0; j < n; ++j)
-    {
-      A.vmult(At, T[j]);
-      for (unsigned int i = 0; i <= j; ++i)
-        result(i, j) = T[i] * At;
-    }
+      {
+        A.vmult(At, T[j]);
+        for (unsigned int i = 0; i <= j; ++i)
+          result(i, j) = T[i] * At;
+      }
     // A is symmetric here (stiffness and mass matrices): mirror the
     // computed upper triangle, which halves the work.
     for (unsigned int j = 0; j < n; ++j)
@@ -120,11 +120,11 @@ namespace FuzzyContact
     FullMatrix<double> result(T.size(), Psi.size());
     Vector<double>     APsi(A.m());
     for (unsigned int j = 0; j < Psi.size(); ++j)
-    {
-      A.vmult(APsi, Psi[j]);
-      for (unsigned int i = 0; i < T.size(); ++i)
-        result(i, j) = T[i] * APsi;
-    }
+      {
+        A.vmult(APsi, Psi[j]);
+        for (unsigned int i = 0; i < T.size(); ++i)
+          result(i, j) = T[i] * APsi;
+      }
     return result;
   }
 
@@ -145,11 +145,11 @@ namespace FuzzyContact
     FullMatrix<double> result(C.m(), T.size());
     Vector<double>     Ct(C.m());
     for (unsigned int j = 0; j < T.size(); ++j)
-    {
-      C.vmult(Ct, T[j]);
-      for (unsigned int i = 0; i < C.m(); ++i)
-        result(i, j) = Ct[i];
-    }
+      {
+        C.vmult(Ct, T[j]);
+        for (unsigned int i = 0; i < C.m(); ++i)
+          result(i, j) = Ct[i];
+      }
     return result;
   }
 
@@ -172,11 +172,11 @@ namespace FuzzyContact
     std::vector<Vector<double>> result;
     Vector<double>              y(Y.m());
     for (unsigned int j = 0; j < Y.n(); ++j)
-    {
-      for (unsigned int i = 0; i < Y.m(); ++i)
-        y[i] = Y(i, j);
-      result.push_back(expand(y));
-    }
+      {
+        for (unsigned int i = 0; i < Y.m(); ++i)
+          y[i] = Y(i, j);
+        result.push_back(expand(y));
+      }
     return result;
   }
 
@@ -210,10 +210,10 @@ namespace FuzzyContact
     std::vector<double> a(n * n), b(n * n);
     for (unsigned int j = 0; j < n; ++j)
       for (unsigned int i = 0; i < n; ++i)
-      {
-        a[i + j * n] = A(i, j);
-        b[i + j * n] = B(i, j);
-      }
+        {
+          a[i + j * n] = A(i, j);
+          b[i + j * n] = B(i, j);
+        }
     const types::blas_int        itype = 1, N = n, il = 1, iu = n_wanted;
     const char                   jobz = 'V', range = 'I', uplo = 'U';
     const double                 vl = 0, vu = 0;

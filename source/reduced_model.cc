@@ -24,13 +24,13 @@ namespace FuzzyContact
     double captured = 0;
     double error    = 1;
     for (unsigned int j = 0; j < modes.size(); ++j)
-    {
-      const double a = modes.modes[j] * f;
-      captured += a * a / modes.eigenvalues[j];
-      error = std::sqrt(std::max(0., 1. - captured / energy));
-      if (error <= tolerance)
-        return j + 1;
-    }
+      {
+        const double a = modes.modes[j] * f;
+        captured += a * a / modes.eigenvalues[j];
+        error = std::sqrt(std::max(0., 1. - captured / energy));
+        if (error <= tolerance)
+          return j + 1;
+      }
     std::ostringstream message;
     message << what << ": " << modes.size() << " modes leave a static error of "
             << error
@@ -61,12 +61,12 @@ namespace FuzzyContact
     lambda.reinit(n_m, n_m);
     Vector<double> Kphi(component.n_dofs());
     for (unsigned int j = 0; j < n_m; ++j)
-    {
-      AssertDimension(modes.modes[j].size(), component.n_dofs());
-      K.vmult(Kphi, modes.modes[j]);
-      for (unsigned int i = 0; i < n_m; ++i)
-        lambda(i, j) = modes.modes[i] * Kphi;
-    }
+      {
+        AssertDimension(modes.modes[j].size(), component.n_dofs());
+        K.vmult(Kphi, modes.modes[j]);
+        for (unsigned int i = 0; i < n_m; ++i)
+          lambda(i, j) = modes.modes[i] * Kphi;
+      }
     for (unsigned int i = 0; i < n_m; ++i)
       for (unsigned int j = 0; j < i; ++j)
         lambda(i, j) = lambda(j, i) = 0.5 * (lambda(i, j) + lambda(j, i));
@@ -76,91 +76,90 @@ namespace FuzzyContact
 
     unsigned int n_s = 0;
     if (static_correction)
-    {
-      // Columns of E: unit loads at the attachment DoFs, then the unit
-      // load vectors of the component.
-      std::vector<const Vector<double> *> loads;
-      for (unsigned int l = 0; l < component.description().loads.size(); ++l)
-        if (component.unit_load_vector(l).linfty_norm() > 0)
-          loads.push_back(&component.unit_load_vector(l));
-      const unsigned int n_a = attachment_dofs.size();
-      const unsigned int n_e = n_a + loads.size();
-      AssertThrow(n_e > 0,
-                  ExcMessage("Component " + component.name() +
-                             ": the static correction has neither contact "
-                             "DoFs nor loads to attach modes to."));
-
-      SparseDirectSolver inverse;
-      inverse.factorize(K);
-      psi_raw.assign(n_e, Vector<double>(component.n_dofs()));
-      for (unsigned int e = 0; e < n_e; ++e)
       {
-        if (e < n_a)
-          psi_raw[e][attachment_dofs[e]] = 1;
-        else
-          psi_raw[e] = *loads[e - n_a];
-        inverse.solve(psi_raw[e]);
+        // Columns of E: unit loads at the attachment DoFs, then the unit
+        // load vectors of the component.
+        std::vector<const Vector<double> *> loads;
+        for (unsigned int l = 0; l < component.description().loads.size(); ++l)
+          if (component.unit_load_vector(l).linfty_norm() > 0)
+            loads.push_back(&component.unit_load_vector(l));
+        const unsigned int n_a = attachment_dofs.size();
+        const unsigned int n_e = n_a + loads.size();
+        AssertThrow(n_e > 0,
+                    ExcMessage("Component " + component.name() +
+                               ": the static correction has neither contact "
+                               "DoFs nor loads to attach modes to."));
+
+        SparseDirectSolver inverse;
+        inverse.factorize(K);
+        psi_raw.assign(n_e, Vector<double>(component.n_dofs()));
+        for (unsigned int e = 0; e < n_e; ++e)
+          {
+            if (e < n_a)
+              psi_raw[e][attachment_dofs[e]] = 1;
+            else
+              psi_raw[e] = *loads[e - n_a];
+            inverse.solve(psi_raw[e]);
+          }
+        // E^T v for a vector v.
+        const auto E_transpose = [&](const unsigned int    e,
+                                     const Vector<double> &v) -> double {
+          return e < n_a ? v[attachment_dofs[e]] : (*loads[e - n_a]) * v;
+        };
+
+        B.reinit(n_m, n_e);
+        for (unsigned int j = 0; j < n_m; ++j)
+          for (unsigned int e = 0; e < n_e; ++e)
+            B(j, e) = E_transpose(e, modes.modes[j]);
+
+        // S = E^T K^{-1} E - B^T Lambda^{-1} B.
+        FullMatrix<double> S(n_e, n_e), R(n_m, n_e);
+        for (unsigned int a = 0; a < n_e; ++a)
+          for (unsigned int e = 0; e < n_e; ++e)
+            S(a, e) = E_transpose(a, psi_raw[e]);
+        if (n_m > 0)
+          {
+            lambda_inverse.mmult(R, B);
+            FullMatrix<double> BtR(n_e, n_e);
+            B.Tmmult(BtR, R);
+            S.add(-1., BtR);
+          }
+        for (unsigned int a = 0; a < n_e; ++a)
+          for (unsigned int e = 0; e < a; ++e)
+            S(a, e) = S(e, a) = 0.5 * (S(a, e) + S(e, a));
+
+        // K-orthonormalise: S = Q D Q^T, X = Q_kept D_kept^{-1/2}.
+        double bound = 0;
+        for (unsigned int a = 0; a < n_e; ++a)
+          {
+            double row = 0;
+            for (unsigned int e = 0; e < n_e; ++e)
+              row += std::abs(S(a, e));
+            bound = std::max(bound, row);
+          }
+        LAPACKFullMatrix<double> S_lapack(n_e, n_e);
+        S_lapack = S;
+        Vector<double>     d;
+        FullMatrix<double> Q;
+        S_lapack.compute_eigenvalues_symmetric(
+          -2 * bound - 1e-300,
+          2 * bound + 1e-300,
+          2 * std::numeric_limits<double>::min(),
+          d,
+          Q);
+        const double              d_max = d.size() > 0 ? d.linfty_norm() : 0.;
+        std::vector<unsigned int> kept;
+        for (unsigned int i = 0; i < d.size(); ++i)
+          if (d[i] > rank_tolerance * d_max)
+            kept.push_back(i);
+        n_s = kept.size();
+        X.reinit(n_e, n_s);
+        for (unsigned int s = 0; s < n_s; ++s)
+          for (unsigned int e = 0; e < n_e; ++e)
+            X(e, s) = Q(e, kept[s]) / std::sqrt(d[kept[s]]);
+        // From here on B holds R = Lambda^{-1} Phi^T E.
+        B = R;
       }
-      // E^T v for a vector v.
-      const auto E_transpose = [&](const unsigned int    e,
-                                   const Vector<double> &v) -> double
-      {
-        return e < n_a ? v[attachment_dofs[e]] : (*loads[e - n_a]) * v;
-      };
-
-      B.reinit(n_m, n_e);
-      for (unsigned int j = 0; j < n_m; ++j)
-        for (unsigned int e = 0; e < n_e; ++e)
-          B(j, e) = E_transpose(e, modes.modes[j]);
-
-      // S = E^T K^{-1} E - B^T Lambda^{-1} B.
-      FullMatrix<double> S(n_e, n_e), R(n_m, n_e);
-      for (unsigned int a = 0; a < n_e; ++a)
-        for (unsigned int e = 0; e < n_e; ++e)
-          S(a, e) = E_transpose(a, psi_raw[e]);
-      if (n_m > 0)
-      {
-        lambda_inverse.mmult(R, B);
-        FullMatrix<double> BtR(n_e, n_e);
-        B.Tmmult(BtR, R);
-        S.add(-1., BtR);
-      }
-      for (unsigned int a = 0; a < n_e; ++a)
-        for (unsigned int e = 0; e < a; ++e)
-          S(a, e) = S(e, a) = 0.5 * (S(a, e) + S(e, a));
-
-      // K-orthonormalise: S = Q D Q^T, X = Q_kept D_kept^{-1/2}.
-      double bound = 0;
-      for (unsigned int a = 0; a < n_e; ++a)
-      {
-        double row = 0;
-        for (unsigned int e = 0; e < n_e; ++e)
-          row += std::abs(S(a, e));
-        bound = std::max(bound, row);
-      }
-      LAPACKFullMatrix<double> S_lapack(n_e, n_e);
-      S_lapack = S;
-      Vector<double>     d;
-      FullMatrix<double> Q;
-      S_lapack.compute_eigenvalues_symmetric(
-        -2 * bound - 1e-300,
-        2 * bound + 1e-300,
-        2 * std::numeric_limits<double>::min(),
-        d,
-        Q);
-      const double              d_max = d.size() > 0 ? d.linfty_norm() : 0.;
-      std::vector<unsigned int> kept;
-      for (unsigned int i = 0; i < d.size(); ++i)
-        if (d[i] > rank_tolerance * d_max)
-          kept.push_back(i);
-      n_s = kept.size();
-      X.reinit(n_e, n_s);
-      for (unsigned int s = 0; s < n_s; ++s)
-        for (unsigned int e = 0; e < n_e; ++e)
-          X(e, s) = Q(e, kept[s]) / std::sqrt(d[kept[s]]);
-      // From here on B holds R = Lambda^{-1} Phi^T E.
-      B = R;
-    }
 
     K_r.reinit(n_m + n_s, n_m + n_s);
     for (unsigned int i = 0; i < n_m; ++i)
@@ -211,22 +210,22 @@ namespace FuzzyContact
     for (unsigned int j = 0; j < n_m; ++j)
       q[j] = phi_f[j] = modes.modes[j] * f;
     if (n_s > 0)
-    {
-      // Psi_res^T f = Psi_raw^T f - R^T Phi^T f, then X^T.
-      Vector<double> psi_f(psi_raw.size());
-      for (unsigned int e = 0; e < psi_raw.size(); ++e)
-        psi_f[e] = psi_raw[e] * f;
-      if (n_m > 0)
       {
-        Vector<double> correction(psi_raw.size());
-        B.Tvmult(correction, phi_f);
-        psi_f -= correction;
+        // Psi_res^T f = Psi_raw^T f - R^T Phi^T f, then X^T.
+        Vector<double> psi_f(psi_raw.size());
+        for (unsigned int e = 0; e < psi_raw.size(); ++e)
+          psi_f[e] = psi_raw[e] * f;
+        if (n_m > 0)
+          {
+            Vector<double> correction(psi_raw.size());
+            B.Tvmult(correction, phi_f);
+            psi_f -= correction;
+          }
+        Vector<double> qs(n_s);
+        X.Tvmult(qs, psi_f);
+        for (unsigned int s = 0; s < n_s; ++s)
+          q[n_m + s] = qs[s];
       }
-      Vector<double> qs(n_s);
-      X.Tvmult(qs, psi_f);
-      for (unsigned int s = 0; s < n_s; ++s)
-        q[n_m + s] = qs[s];
-    }
     return q;
   }
 
@@ -240,33 +239,33 @@ namespace FuzzyContact
     FullMatrix<double> C_phi(m, n_m);
     Vector<double>     column(m);
     for (unsigned int j = 0; j < n_m; ++j)
-    {
-      C.vmult(column, modes.modes[j]);
-      for (unsigned int i = 0; i < m; ++i)
-        Cr(i, j) = C_phi(i, j) = column[i];
-    }
-    if (n_s > 0)
-    {
-      FullMatrix<double> C_psi(m, psi_raw.size());
-      for (unsigned int e = 0; e < psi_raw.size(); ++e)
       {
-        C.vmult(column, psi_raw[e]);
+        C.vmult(column, modes.modes[j]);
         for (unsigned int i = 0; i < m; ++i)
-          C_psi(i, e) = column[i];
+          Cr(i, j) = C_phi(i, j) = column[i];
       }
-      // C Psi_res = C Psi_raw - (C Phi) R.
-      if (n_m > 0)
+    if (n_s > 0)
       {
-        FullMatrix<double> C_phi_R(m, psi_raw.size());
-        C_phi.mmult(C_phi_R, B);
-        C_psi.add(-1., C_phi_R);
+        FullMatrix<double> C_psi(m, psi_raw.size());
+        for (unsigned int e = 0; e < psi_raw.size(); ++e)
+          {
+            C.vmult(column, psi_raw[e]);
+            for (unsigned int i = 0; i < m; ++i)
+              C_psi(i, e) = column[i];
+          }
+        // C Psi_res = C Psi_raw - (C Phi) R.
+        if (n_m > 0)
+          {
+            FullMatrix<double> C_phi_R(m, psi_raw.size());
+            C_phi.mmult(C_phi_R, B);
+            C_psi.add(-1., C_phi_R);
+          }
+        FullMatrix<double> C_corr(m, n_s);
+        C_psi.mmult(C_corr, X);
+        for (unsigned int i = 0; i < m; ++i)
+          for (unsigned int s = 0; s < n_s; ++s)
+            Cr(i, n_m + s) = C_corr(i, s);
       }
-      FullMatrix<double> C_corr(m, n_s);
-      C_psi.mmult(C_corr, X);
-      for (unsigned int i = 0; i < m; ++i)
-        for (unsigned int s = 0; s < n_s; ++s)
-          Cr(i, n_m + s) = C_corr(i, s);
-    }
     return Cr;
   }
 
@@ -277,24 +276,24 @@ namespace FuzzyContact
     const unsigned int n_m = n_modes(), n_s = n_corrections();
     FullMatrix<double> V(dofs.size(), n_m + n_s);
     for (unsigned int r = 0; r < dofs.size(); ++r)
-    {
-      AssertIndexRange(dofs[r], component.n_dofs());
-      for (unsigned int j = 0; j < n_m; ++j)
-        V(r, j) = modes.modes[j][dofs[r]];
-      if (n_s > 0)
       {
-        Vector<double> psi_res(psi_raw.size());
-        for (unsigned int e = 0; e < psi_raw.size(); ++e)
-        {
-          psi_res[e] = psi_raw[e][dofs[r]];
-          for (unsigned int j = 0; j < n_m; ++j)
-            psi_res[e] -= modes.modes[j][dofs[r]] * B(j, e);
-        }
-        for (unsigned int s = 0; s < n_s; ++s)
-          for (unsigned int e = 0; e < psi_raw.size(); ++e)
-            V(r, n_m + s) += psi_res[e] * X(e, s);
+        AssertIndexRange(dofs[r], component.n_dofs());
+        for (unsigned int j = 0; j < n_m; ++j)
+          V(r, j) = modes.modes[j][dofs[r]];
+        if (n_s > 0)
+          {
+            Vector<double> psi_res(psi_raw.size());
+            for (unsigned int e = 0; e < psi_raw.size(); ++e)
+              {
+                psi_res[e] = psi_raw[e][dofs[r]];
+                for (unsigned int j = 0; j < n_m; ++j)
+                  psi_res[e] -= modes.modes[j][dofs[r]] * B(j, e);
+              }
+            for (unsigned int s = 0; s < n_s; ++s)
+              for (unsigned int e = 0; e < psi_raw.size(); ++e)
+                V(r, n_m + s) += psi_res[e] * X(e, s);
+          }
       }
-    }
     return V;
   }
 
@@ -309,20 +308,20 @@ namespace FuzzyContact
     for (unsigned int j = 0; j < n_m; ++j)
       qm[j] = q[j];
     if (n_s > 0)
-    {
-      // Psi q_s = Psi_raw (X q_s) - Phi R (X q_s).
-      Vector<double> qs(n_s), xq(psi_raw.size()), rxq(n_m);
-      for (unsigned int s = 0; s < n_s; ++s)
-        qs[s] = q[n_m + s];
-      X.vmult(xq, qs);
-      for (unsigned int e = 0; e < psi_raw.size(); ++e)
-        u.add(xq[e], psi_raw[e]);
-      if (n_m > 0)
       {
-        B.vmult(rxq, xq);
-        qm -= rxq;
+        // Psi q_s = Psi_raw (X q_s) - Phi R (X q_s).
+        Vector<double> qs(n_s), xq(psi_raw.size()), rxq(n_m);
+        for (unsigned int s = 0; s < n_s; ++s)
+          qs[s] = q[n_m + s];
+        X.vmult(xq, qs);
+        for (unsigned int e = 0; e < psi_raw.size(); ++e)
+          u.add(xq[e], psi_raw[e]);
+        if (n_m > 0)
+          {
+            B.vmult(rxq, xq);
+            qm -= rxq;
+          }
       }
-    }
     for (unsigned int j = 0; j < n_m; ++j)
       u.add(qm[j], modes.modes[j]);
   }
@@ -335,25 +334,25 @@ namespace FuzzyContact
     const unsigned int k = size();
     FullMatrix<double> Kz(k, k);
     if (component.n_zones() == 1)
-    {
-      Kz = K_r;
-      Kz /= component.zone_moduli()[0];
-      return Kz;
-    }
+      {
+        Kz = K_r;
+        Kz /= component.zone_moduli()[0];
+        return Kz;
+      }
     std::vector<Vector<double>> V(k);
     Vector<double>              e(k), Kv(component.n_dofs());
     for (unsigned int j = 0; j < k; ++j)
-    {
-      e    = 0;
-      e[j] = 1;
-      expand(e, V[j]);
-    }
+      {
+        e    = 0;
+        e[j] = 1;
+        expand(e, V[j]);
+      }
     for (unsigned int j = 0; j < k; ++j)
-    {
-      component.zone_stiffness_matrix(zone).vmult(Kv, V[j]);
-      for (unsigned int i = 0; i <= j; ++i)
-        Kz(i, j) = Kz(j, i) = V[i] * Kv;
-    }
+      {
+        component.zone_stiffness_matrix(zone).vmult(Kv, V[j]);
+        for (unsigned int i = 0; i <= j; ++i)
+          Kz(i, j) = Kz(j, i) = V[i] * Kv;
+      }
     return Kz;
   }
 
@@ -445,10 +444,10 @@ namespace FuzzyContact
     FullMatrix<double> OY(n_obs, m);
     Vector<double>     Oq(n_obs);
     if (n_obs > 0)
-    {
-      r.observation.mmult(OY, Yf);
-      r.observation.vmult(Oq, q);
-    }
+      {
+        r.observation.mmult(OY, Yf);
+        r.observation.vmult(Oq, q);
+      }
     observation_flexibility[c] = std::move(OY);
     observation_load[c]        = std::move(Oq);
     factors[c]                 = std::move(factor_pointer);
@@ -462,10 +461,10 @@ namespace FuzzyContact
     problem_.W.reinit(m, m);
     problem_.g_load.reinit(m);
     for (unsigned int c = 0; c < components.size(); ++c)
-    {
-      problem_.W.add(1. / scales[c], flexibilities[c]);
-      problem_.g_load.add(1. / scales[c], load_gaps[c]);
-    }
+      {
+        problem_.W.add(1. / scales[c], flexibilities[c]);
+        problem_.g_load.add(1. / scales[c], load_gaps[c]);
+      }
     problem_.check();
   }
 
@@ -531,14 +530,14 @@ namespace FuzzyContact
   {
     std::vector<Vector<double>> q;
     for (unsigned int c = 0; c < components.size(); ++c)
-    {
-      Vector<double> rhs = components[c].load;
-      rhs *= load_factor;
-      components[c].gap_operator.Tvmult_add(rhs, p);
-      factors[c]->solve(rhs);
-      rhs /= scales[c];
-      q.push_back(std::move(rhs));
-    }
+      {
+        Vector<double> rhs = components[c].load;
+        rhs *= load_factor;
+        components[c].gap_operator.Tvmult_add(rhs, p);
+        factors[c]->solve(rhs);
+        rhs /= scales[c];
+        q.push_back(std::move(rhs));
+      }
     return q;
   }
 
@@ -558,31 +557,31 @@ namespace FuzzyContact
     s.residual   = state.residual;
     s.compute_totals();
     if (report != nullptr)
-    {
-      const auto displacement = [&](const FaceNode &node, const unsigned d)
       {
-        const ReducedComponentMatrices &r  = components[node.component];
-        const auto                      it = std::find(r.observed_dofs.begin(),
-                                  r.observed_dofs.end(),
-                                  node.dofs[d]);
-        AssertThrow(it != r.observed_dofs.end(),
-                    ExcMessage("ReducedContactModel: a report DoF is not "
-                               "among the observed DoFs."));
-        const unsigned int        row = it - r.observed_dofs.begin();
-        const FullMatrix<double> &OY  = observation_flexibility[node.component];
-        double u = load_factor * observation_load[node.component][row];
-        for (unsigned int j = 0; j < state.p.size(); ++j)
-          if (state.p[j] != 0)
-            u += OY(row, j) * state.p[j];
-        return u / scales[node.component];
-      };
-      for (unsigned int d = 0; d < 2; ++d)
-      {
-        s.slave_displacement[d] = displacement(report->slave, d);
-        for (unsigned int i = 0; i < 2; ++i)
-          s.master_displacements[i][d] = displacement(report->master[i], d);
+        const auto displacement = [&](const FaceNode &node, const unsigned d) {
+          const ReducedComponentMatrices &r = components[node.component];
+          const auto it                     = std::find(r.observed_dofs.begin(),
+                                    r.observed_dofs.end(),
+                                    node.dofs[d]);
+          AssertThrow(it != r.observed_dofs.end(),
+                      ExcMessage("ReducedContactModel: a report DoF is not "
+                                 "among the observed DoFs."));
+          const unsigned int        row = it - r.observed_dofs.begin();
+          const FullMatrix<double> &OY =
+            observation_flexibility[node.component];
+          double u = load_factor * observation_load[node.component][row];
+          for (unsigned int j = 0; j < state.p.size(); ++j)
+            if (state.p[j] != 0)
+              u += OY(row, j) * state.p[j];
+          return u / scales[node.component];
+        };
+        for (unsigned int d = 0; d < 2; ++d)
+          {
+            s.slave_displacement[d] = displacement(report->slave, d);
+            for (unsigned int i = 0; i < 2; ++i)
+              s.master_displacements[i][d] = displacement(report->master[i], d);
+          }
       }
-    }
     return s;
   }
 } // namespace FuzzyContact

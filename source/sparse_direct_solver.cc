@@ -37,19 +37,19 @@ namespace FuzzyContact
     row_starts.assign(1, 0);
     std::vector<std::pair<long, double>> row;
     for (long i = 0; i < n; ++i)
-    {
-      row.clear();
-      for (auto it = A.begin(i); it != A.end(i); ++it)
-        row.emplace_back(it->column(), it->value());
-      // deal.II stores the diagonal first; UMFPACK wants sorted indices.
-      std::sort(row.begin(), row.end());
-      for (const auto &[j, value] : row)
       {
-        columns.push_back(j);
-        values.push_back(value);
+        row.clear();
+        for (auto it = A.begin(i); it != A.end(i); ++it)
+          row.emplace_back(it->column(), it->value());
+        // deal.II stores the diagonal first; UMFPACK wants sorted indices.
+        std::sort(row.begin(), row.end());
+        for (const auto &[j, value] : row)
+          {
+            columns.push_back(j);
+            values.push_back(value);
+          }
+        row_starts.push_back(columns.size());
       }
-      row_starts.push_back(columns.size());
-    }
 
     control.resize(UMFPACK_CONTROL);
     umfpack_dl_defaults(control.data());

@@ -23,13 +23,13 @@ namespace
   error_of(const std::function<void()> &f)
   {
     try
-    {
-      f();
-    }
+      {
+        f();
+      }
     catch (const dealii::ExceptionBase &e)
-    {
-      return Input::message_of(e);
-    }
+      {
+        return Input::message_of(e);
+      }
     return "";
   }
 } // namespace
@@ -54,10 +54,10 @@ TEST(FuzzyNumber, AlphaCutsOfATriangle)
   EXPECT_EQ(f.membership(50e3), 1.);
   // membership and alpha-cut are inverse to each other
   for (const double a : {0.1, 0.3, 0.7, 0.9})
-  {
-    EXPECT_NEAR(f.membership(f.alpha_cut(a).lower), a, 1e-12);
-    EXPECT_NEAR(f.membership(f.alpha_cut(a).upper), a, 1e-12);
-  }
+    {
+      EXPECT_NEAR(f.membership(f.alpha_cut(a).lower), a, 1e-12);
+      EXPECT_NEAR(f.membership(f.alpha_cut(a).upper), a, 1e-12);
+    }
 }
 
 TEST(FuzzyNumber, TrapezoidAndCrisp)
@@ -76,47 +76,29 @@ TEST(FuzzyNumber, TrapezoidAndCrisp)
 
 TEST(FuzzyNumber, BadInputIsRefusedWithAMessage)
 {
-  EXPECT_NE(error_of(
-              []
-              {
-                FuzzyNumber::triangular(3, 2, 4, "F");
-              })
-              .find("F: the values must not decrease"),
+  EXPECT_NE(error_of([] {
+              FuzzyNumber::triangular(3, 2, 4, "F");
+            }).find("F: the values must not decrease"),
             std::string::npos);
-  EXPECT_NE(error_of(
-              []
-              {
-                FuzzyNumber::triangular(2, 2, 2, "F");
-              })
-              .find("F: the support [2.000000, 2.000000] is empty"),
+  EXPECT_NE(error_of([] {
+              FuzzyNumber::triangular(2, 2, 2, "F");
+            }).find("F: the support [2.000000, 2.000000] is empty"),
             std::string::npos);
-  EXPECT_NE(error_of(
-              []
-              {
-                FuzzyNumber::triangular(1, NAN, 2, "F");
-              })
-              .find("F: every value must be a finite number"),
+  EXPECT_NE(error_of([] {
+              FuzzyNumber::triangular(1, NAN, 2, "F");
+            }).find("F: every value must be a finite number"),
             std::string::npos);
-  EXPECT_NE(error_of(
-              []
-              {
-                FuzzyNumber::from("triangular", {1, 2}, "F");
-              })
-              .find("F: a triangular fuzzy number needs 3 values, got 2"),
+  EXPECT_NE(error_of([] {
+              FuzzyNumber::from("triangular", {1, 2}, "F");
+            }).find("F: a triangular fuzzy number needs 3 values, got 2"),
             std::string::npos);
-  EXPECT_NE(error_of(
-              []
-              {
-                FuzzyNumber::from("gaussian", {1}, "F");
-              })
-              .find("unknown shape <gaussian>"),
+  EXPECT_NE(error_of([] {
+              FuzzyNumber::from("gaussian", {1}, "F");
+            }).find("unknown shape <gaussian>"),
             std::string::npos);
-  EXPECT_NE(error_of(
-              []
-              {
-                alpha_levels(1);
-              })
-              .find("number of alpha levels must be at least 2"),
+  EXPECT_NE(error_of([] {
+              alpha_levels(1);
+            }).find("number of alpha levels must be at least 2"),
             std::string::npos);
   const auto levels = alpha_levels(11);
   ASSERT_EQ(levels.size(), 11u);
@@ -146,40 +128,25 @@ TEST(SceneQuantity, NamesValuesAndErrors)
   EXPECT_EQ(scene.components[0].zones[0].youngs_modulus, 200e9);
   EXPECT_EQ(scene.components[1].zones[0].youngs_modulus, 210e9);
 
-  EXPECT_NE(error_of(
-              [&]
-              {
-                SceneQuantity::parse("P3.E", scene);
-              })
-              .find("Scene quantity <P3.E>: the scene has no component <P3>"),
+  EXPECT_NE(error_of([&] {
+              SceneQuantity::parse("P3.E", scene);
+            }).find("Scene quantity <P3.E>: the scene has no component <P3>"),
             std::string::npos);
-  EXPECT_NE(error_of(
-              [&]
-              {
-                SceneQuantity::parse("P1.root.E", scene);
-              })
-              .find("component P1 has no zone <root>"),
+  EXPECT_NE(error_of([&] {
+              SceneQuantity::parse("P1.root.E", scene);
+            }).find("component P1 has no zone <root>"),
             std::string::npos);
-  EXPECT_NE(error_of(
-              [&]
-              {
-                SceneQuantity::parse("P2.tip.force", scene);
-              })
-              .find("component P2 has no load <tip>"),
+  EXPECT_NE(error_of([&] {
+              SceneQuantity::parse("P2.tip.force", scene);
+            }).find("component P2 has no load <tip>"),
             std::string::npos);
-  EXPECT_NE(error_of(
-              [&]
-              {
-                SceneQuantity::parse("P1.nu", scene);
-              })
-              .find("<nu> is not a quantity"),
+  EXPECT_NE(error_of([&] {
+              SceneQuantity::parse("P1.nu", scene);
+            }).find("<nu> is not a quantity"),
             std::string::npos);
-  EXPECT_NE(error_of(
-              [&]
-              {
-                E1.apply(scene, -1);
-              })
-              .find("P1.E must be positive"),
+  EXPECT_NE(error_of([&] {
+              E1.apply(scene, -1);
+            }).find("P1.E must be positive"),
             std::string::npos);
 }
 
@@ -201,16 +168,13 @@ end
   Input::parse_in_passes(
     text,
     "test.prm",
-    [&](dealii::ParameterHandler &prm)
-    {
+    [&](dealii::ParameterHandler &prm) {
       set.declare_parameters(prm);
     },
-    [&](dealii::ParameterHandler &prm)
-    {
+    [&](dealii::ParameterHandler &prm) {
       return set.learn_names(prm);
     },
-    [&](dealii::ParameterHandler &prm)
-    {
+    [&](dealii::ParameterHandler &prm) {
       set.parse_parameters(prm, scene);
     });
   ASSERT_EQ(set.parameters().size(), 2u);
@@ -225,28 +189,22 @@ end
 TEST(FuzzyParameterSet, BadInputIsRefusedWithAMessage)
 {
   const Scene scene = Scene::read(source_dir + "/prm/overlap.prm");
-  const auto  parse = [&](const std::string &text)
-  {
-    return error_of(
-      [&]
-      {
-        FuzzyParameterSet set;
-        Input::parse_in_passes(
-          text,
-          "test.prm",
-          [&](dealii::ParameterHandler &prm)
-          {
-            set.declare_parameters(prm);
-          },
-          [&](dealii::ParameterHandler &prm)
-          {
-            return set.learn_names(prm);
-          },
-          [&](dealii::ParameterHandler &prm)
-          {
-            set.parse_parameters(prm, scene);
-          });
-      });
+  const auto  parse = [&](const std::string &text) {
+    return error_of([&] {
+      FuzzyParameterSet set;
+      Input::parse_in_passes(
+        text,
+        "test.prm",
+        [&](dealii::ParameterHandler &prm) {
+          set.declare_parameters(prm);
+        },
+        [&](dealii::ParameterHandler &prm) {
+          return set.learn_names(prm);
+        },
+        [&](dealii::ParameterHandler &prm) {
+          set.parse_parameters(prm, scene);
+        });
+    });
   };
   EXPECT_NE(parse("set fuzzy parameters = P1.G\nsubsection Fuzzy parameter "
                   "P1.G\nset values = 1,2,3\nend\n")
@@ -301,15 +259,15 @@ namespace
   {
     std::vector<Interval> bounds;
     for (const double a : alpha)
-    {
-      const auto box = alpha_box(three_parameters, a);
-      if (output == 0)
-        bounds.push_back({box[2].lower / (box[0].upper + box[1].upper),
-                          box[2].upper / (box[0].lower + box[1].lower)});
-      else
-        bounds.push_back({box[0].lower * box[1].lower - 0.01 * box[2].upper,
-                          box[0].upper * box[1].upper - 0.01 * box[2].lower});
-    }
+      {
+        const auto box = alpha_box(three_parameters, a);
+        if (output == 0)
+          bounds.push_back({box[2].lower / (box[0].upper + box[1].upper),
+                            box[2].upper / (box[0].lower + box[1].lower)});
+        else
+          bounds.push_back({box[0].lower * box[1].lower - 0.01 * box[2].upper,
+                            box[0].upper * box[1].upper - 0.01 * box[2].lower});
+      }
     return bounds;
   }
 } // namespace
@@ -325,12 +283,12 @@ TEST(IntervalMethods, AllThreeAreExactForAMonotoneResponse)
                                      {"S1", "S2"},
                                      OptimisationSettings());
   for (unsigned int k = 0; k < 2; ++k)
-  {
-    const auto exact = monotone_exact(k, alpha);
-    EXPECT_LT(max_relative_difference(v.bounds[k], exact), 1e-15);
-    EXPECT_LT(max_relative_difference(e.bounds[k], exact), 1e-15);
-    EXPECT_LT(max_relative_difference(o.bounds[k], exact), 1e-12);
-  }
+    {
+      const auto exact = monotone_exact(k, alpha);
+      EXPECT_LT(max_relative_difference(v.bounds[k], exact), 1e-15);
+      EXPECT_LT(max_relative_difference(e.bounds[k], exact), 1e-15);
+      EXPECT_LT(max_relative_difference(o.bounds[k], exact), 1e-12);
+    }
   EXPECT_TRUE(o.notes.empty()) << o.notes.front();
   // 8 vertices per level, the core is one point: 10 * 8 + 1.
   EXPECT_EQ(v.n_evaluations, 81u);
@@ -347,23 +305,22 @@ TEST(IntervalMethods, NonMonotoneResponseIsDetectedAndHandled)
   // overestimates the lower bound there.
   const std::vector<FuzzyNumber> parameters =
     {FuzzyNumber::triangular(0.9, 1.0, 1.1), FuzzyNumber::triangular(1, 2, 3)};
-  const Response response = [](const std::vector<double> &p)
-  {
+  const Response response = [](const std::vector<double> &p) {
     return std::vector<double>{(p[0] - 1.02) * (p[0] - 1.02) + 0.1 * p[1]};
   };
   const auto            alpha = alpha_levels(11);
   std::vector<Interval> exact;
   for (const double a : alpha)
-  {
-    const auto   box = alpha_box(parameters, a);
-    const double lo0 = box[0].contains(1.02)
-                         ? 0.
-                         : std::min(std::pow(box[0].lower - 1.02, 2),
-                                    std::pow(box[0].upper - 1.02, 2));
-    const double hi0 = std::max(std::pow(box[0].lower - 1.02, 2),
-                                std::pow(box[0].upper - 1.02, 2));
-    exact.push_back({lo0 + 0.1 * box[1].lower, hi0 + 0.1 * box[1].upper});
-  }
+    {
+      const auto   box = alpha_box(parameters, a);
+      const double lo0 = box[0].contains(1.02)
+                           ? 0.
+                           : std::min(std::pow(box[0].lower - 1.02, 2),
+                                      std::pow(box[0].upper - 1.02, 2));
+      const double hi0 = std::max(std::pow(box[0].lower - 1.02, 2),
+                                  std::pow(box[0].upper - 1.02, 2));
+      exact.push_back({lo0 + 0.1 * box[1].lower, hi0 + 0.1 * box[1].upper});
+    }
 
   const auto v = vertex_method(parameters, alpha, response, 1);
   EXPECT_GT(max_relative_difference(v.bounds[0], exact), 1e-3);
@@ -395,8 +352,7 @@ TEST(IntervalMethods, LocalOptimumTrapIsCaughtByTheVertexCheck)
   // must find -1. Without the fallback the detection is still reported.
   const std::vector<FuzzyNumber> parameters = {
     FuzzyNumber::triangular(0.9, 1.0, 1.1)};
-  const Response response = [](const std::vector<double> &p)
-  {
+  const Response response = [](const std::vector<double> &p) {
     return std::vector<double>{std::cos(3 * M_PI * (p[0] - 1) / 0.1)};
   };
   const std::vector<double> alpha = {0, 1};
@@ -415,12 +371,10 @@ TEST(IntervalMethods, LocalOptimumTrapIsCaughtByTheVertexCheck)
 TEST(IntervalMethods, CacheCountsDistinctEvaluations)
 {
   unsigned int    calls = 0;
-  EvaluationCache cache(
-    [&](const std::vector<double> &p)
-    {
-      ++calls;
-      return std::vector<double>{p[0]};
-    });
+  EvaluationCache cache([&](const std::vector<double> &p) {
+    ++calls;
+    return std::vector<double>{p[0]};
+  });
   cache({1.0});
   cache({2.0});
   cache({1.0});

@@ -135,15 +135,15 @@ namespace Step1
     const auto           &direction = component.dof_directions();
     Vector<double>        phi_y(component.n_dofs());
     for (const Vector<double> &phi : basis.modes)
-    {
-      for (unsigned int i = 0; i < phi.size(); ++i)
-        phi_y[i] = (direction[i] == 1 ? phi[i] : 0.);
-      const double share = component.mass_matrix().matrix_norm_square(phi_y) /
-                           component.mass_matrix().matrix_norm_square(phi);
-      const bool bending = share > 0.5;
-      kinds.push_back(
-        ModeKind{bending, bending ? ++n_bending : ++n_axial, share});
-    }
+      {
+        for (unsigned int i = 0; i < phi.size(); ++i)
+          phi_y[i] = (direction[i] == 1 ? phi[i] : 0.);
+        const double share = component.mass_matrix().matrix_norm_square(phi_y) /
+                             component.mass_matrix().matrix_norm_square(phi);
+        const bool bending = share > 0.5;
+        kinds.push_back(
+          ModeKind{bending, bending ? ++n_bending : ++n_axial, share});
+      }
     return kinds;
   }
 
@@ -237,119 +237,124 @@ namespace Step1
     results["components"] = nlohmann::json::array();
 
     for (const ComponentDescription &description : scene.components)
-    {
-      const Component component(description,
-                                scene.plane_model,
-                                parameters.mesh_refinements,
-                                &timer);
-      ModalBasis      basis;
       {
-        TimerOutput::Scope scope(timer, "eigenvalues (ARPACK)");
-        basis = solver.solve(component.stiffness_matrix(),
-                             component.mass_matrix(),
-                             "Component " + description.name);
-      }
-      const std::vector<ModeKind> kinds = classify(component, basis);
-      const std::vector<double>   f     = basis.frequencies();
-
-      const bool cantilever = description.clamped_faces.size() == 1 &&
-                              (description.clamped_faces[0] == Face::left ||
-                               description.clamped_faces[0] == Face::right);
-      bool single_material = true;
-      for (const MaterialZone &z : description.zones)
-        single_material =
-          single_material &&
-          z.youngs_modulus == description.zones[0].youngs_modulus &&
-          z.poissons_ratio == description.zones[0].poissons_ratio &&
-          z.density == description.zones[0].density;
-      const bool with_theory = cantilever && single_material;
-
-      std::ostringstream out;
-      out << "\nComponent " << description.name << " ("
-          << to_string(scene.plane_model) << ", "
-          << description.subdivisions[0] * (1u << parameters.mesh_refinements)
-          << " x "
-          << description.subdivisions[1] * (1u << parameters.mesh_refinements)
-          << " cells of Q" << description.fe_degree << ", "
-          << component.n_dofs() << " DoFs)\n";
-      out << " mode     f_FE [Hz]  kind          Euler-B. [Hz]  "
-             "Timoshenko [Hz]  bar [Hz]   FE vs theory  residual\n";
-
-      nlohmann::json entry;
-      entry["name"]           = description.name;
-      entry["n_dofs"]         = component.n_dofs();
-      entry["frequencies_hz"] = f;
-      entry["residuals"]      = basis.residuals;
-      entry["kinds"]          = nlohmann::json::array();
-      entry["theory_hz"]      = nlohmann::json::array();
-
-      for (unsigned int j = 0; j < basis.size(); ++j)
-      {
-        out << std::setw(5) << j + 1 << std::setw(14) << std::fixed
-            << std::setprecision(2) << f[j] << "  " << std::left
-            << std::setw(12) << kinds[j].name() << std::right;
-        double reference = 0;
-        if (with_theory)
+        const Component component(description,
+                                  scene.plane_model,
+                                  parameters.mesh_refinements,
+                                  &timer);
+        ModalBasis      basis;
         {
-          const auto beam =
-            BeamTheory::Beam::of(description, scene.plane_model);
-          if (kinds[j].bending)
-          {
-            const double eb =
-              BeamTheory::euler_bernoulli_frequency(beam, kinds[j].order);
-            reference = BeamTheory::timoshenko_frequency(beam, kinds[j].order);
-            out << std::setw(15) << eb << std::setw(17) << reference
-                << std::setw(10) << "";
-          }
-          else
-          {
-            reference = BeamTheory::axial_frequency(beam, kinds[j].order);
-            out << std::setw(15) << "" << std::setw(17) << "" << std::setw(10)
-                << reference;
-          }
-          out << std::setw(14) << percent(f[j] / reference - 1);
+          TimerOutput::Scope scope(timer, "eigenvalues (ARPACK)");
+          basis = solver.solve(component.stiffness_matrix(),
+                               component.mass_matrix(),
+                               "Component " + description.name);
         }
-        else
-          out << std::setw(56) << "";
-        out << std::setw(10) << scientific(basis.residuals[j]) << "\n";
-        entry["kinds"].push_back(kinds[j].name());
-        entry["theory_hz"].push_back(reference);
-      }
-      out << " largest residual " << scientific(basis.max_residual())
-          << (with_theory ? "; theory: Timoshenko for bending modes "
-                            "(Cowper's shear coefficient), bar for axial "
-                            "modes\n"
-                          : "\n");
-      say(out.str());
+        const std::vector<ModeKind> kinds = classify(component, basis);
+        const std::vector<double>   f     = basis.frequencies();
 
-      // Mode shapes for ParaView: one vector field per mode, and the zone
-      // of each cell.
-      DataOut<2> data_out;
-      data_out.attach_dof_handler(component.dof_handler());
-      const std::vector<
-        DataComponentInterpretation::DataComponentInterpretation>
-        vector_field(2,
-                     DataComponentInterpretation::component_is_part_of_vector);
-      for (unsigned int j = 0; j < basis.size(); ++j)
-      {
-        std::ostringstream name;
-        name << "mode_" << std::setw(2) << std::setfill('0') << j + 1;
-        data_out.add_data_vector(basis.modes[j],
-                                 std::vector<std::string>(2, name.str()),
-                                 DataOut<2>::type_dof_data,
-                                 vector_field);
-      }
-      Vector<float> zone(component.triangulation().n_active_cells());
-      for (const auto &cell : component.triangulation().active_cell_iterators())
-        zone[cell->active_cell_index()] = cell->material_id();
-      data_out.add_data_vector(zone, "zone");
-      data_out.build_patches(description.fe_degree);
-      std::ostringstream vtu;
-      data_out.write_vtu(vtu);
-      output.add("modes-" + description.name + ".vtu", vtu.str());
+        const bool cantilever = description.clamped_faces.size() == 1 &&
+                                (description.clamped_faces[0] == Face::left ||
+                                 description.clamped_faces[0] == Face::right);
+        bool single_material = true;
+        for (const MaterialZone &z : description.zones)
+          single_material =
+            single_material &&
+            z.youngs_modulus == description.zones[0].youngs_modulus &&
+            z.poissons_ratio == description.zones[0].poissons_ratio &&
+            z.density == description.zones[0].density;
+        const bool with_theory = cantilever && single_material;
 
-      results["components"].push_back(entry);
-    }
+        std::ostringstream out;
+        out << "\nComponent " << description.name << " ("
+            << to_string(scene.plane_model) << ", "
+            << description.subdivisions[0] * (1u << parameters.mesh_refinements)
+            << " x "
+            << description.subdivisions[1] * (1u << parameters.mesh_refinements)
+            << " cells of Q" << description.fe_degree << ", "
+            << component.n_dofs() << " DoFs)\n";
+        out << " mode     f_FE [Hz]  kind          Euler-B. [Hz]  "
+               "Timoshenko [Hz]  bar [Hz]   FE vs theory  residual\n";
+
+        nlohmann::json entry;
+        entry["name"]           = description.name;
+        entry["n_dofs"]         = component.n_dofs();
+        entry["frequencies_hz"] = f;
+        entry["residuals"]      = basis.residuals;
+        entry["kinds"]          = nlohmann::json::array();
+        entry["theory_hz"]      = nlohmann::json::array();
+
+        for (unsigned int j = 0; j < basis.size(); ++j)
+          {
+            out << std::setw(5) << j + 1 << std::setw(14) << std::fixed
+                << std::setprecision(2) << f[j] << "  " << std::left
+                << std::setw(12) << kinds[j].name() << std::right;
+            double reference = 0;
+            if (with_theory)
+              {
+                const auto beam =
+                  BeamTheory::Beam::of(description, scene.plane_model);
+                if (kinds[j].bending)
+                  {
+                    const double eb =
+                      BeamTheory::euler_bernoulli_frequency(beam,
+                                                            kinds[j].order);
+                    reference =
+                      BeamTheory::timoshenko_frequency(beam, kinds[j].order);
+                    out << std::setw(15) << eb << std::setw(17) << reference
+                        << std::setw(10) << "";
+                  }
+                else
+                  {
+                    reference =
+                      BeamTheory::axial_frequency(beam, kinds[j].order);
+                    out << std::setw(15) << "" << std::setw(17) << ""
+                        << std::setw(10) << reference;
+                  }
+                out << std::setw(14) << percent(f[j] / reference - 1);
+              }
+            else
+              out << std::setw(56) << "";
+            out << std::setw(10) << scientific(basis.residuals[j]) << "\n";
+            entry["kinds"].push_back(kinds[j].name());
+            entry["theory_hz"].push_back(reference);
+          }
+        out << " largest residual " << scientific(basis.max_residual())
+            << (with_theory ? "; theory: Timoshenko for bending modes "
+                              "(Cowper's shear coefficient), bar for axial "
+                              "modes\n"
+                            : "\n");
+        say(out.str());
+
+        // Mode shapes for ParaView: one vector field per mode, and the zone
+        // of each cell.
+        DataOut<2> data_out;
+        data_out.attach_dof_handler(component.dof_handler());
+        const std::vector<
+          DataComponentInterpretation::DataComponentInterpretation>
+          vector_field(
+            2,
+            DataComponentInterpretation::component_is_part_of_vector);
+        for (unsigned int j = 0; j < basis.size(); ++j)
+          {
+            std::ostringstream name;
+            name << "mode_" << std::setw(2) << std::setfill('0') << j + 1;
+            data_out.add_data_vector(basis.modes[j],
+                                     std::vector<std::string>(2, name.str()),
+                                     DataOut<2>::type_dof_data,
+                                     vector_field);
+          }
+        Vector<float> zone(component.triangulation().n_active_cells());
+        for (const auto &cell :
+             component.triangulation().active_cell_iterators())
+          zone[cell->active_cell_index()] = cell->material_id();
+        data_out.add_data_vector(zone, "zone");
+        data_out.build_patches(description.fe_degree);
+        std::ostringstream vtu;
+        data_out.write_vtu(vtu);
+        output.add("modes-" + description.name + ".vtu", vtu.str());
+
+        results["components"].push_back(entry);
+      }
   }
 
 
@@ -377,19 +382,19 @@ namespace Step1
     std::vector<ModelModes> models;
     for (const PlaneModel model :
          {PlaneModel::plane_strain, PlaneModel::plane_stress})
-    {
-      const Component    component(description,
-                                model,
-                                parameters.mesh_refinements,
-                                &timer);
-      TimerOutput::Scope scope(timer, "eigenvalues (ARPACK)");
-      const ModalBasis   basis = solver.solve(component.stiffness_matrix(),
-                                            component.mass_matrix(),
-                                            "Component " + description.name +
-                                              " (" + to_string(model) + ")");
-      models.push_back(
-        {model, basis.frequencies(), classify(component, basis)});
-    }
+      {
+        const Component    component(description,
+                                  model,
+                                  parameters.mesh_refinements,
+                                  &timer);
+        TimerOutput::Scope scope(timer, "eigenvalues (ARPACK)");
+        const ModalBasis   basis = solver.solve(component.stiffness_matrix(),
+                                              component.mass_matrix(),
+                                              "Component " + description.name +
+                                                " (" + to_string(model) + ")");
+        models.push_back(
+          {model, basis.frequencies(), classify(component, basis)});
+      }
 
     std::ostringstream out;
     out << "\nComparison with Table 1 of the paper (component "
@@ -405,96 +410,97 @@ namespace Step1
       matched[m].assign(models[m].f.size(), false);
 
     for (unsigned int p = 0; p < paper_table_1.size(); ++p)
-    {
-      out << std::setw(11) << p + 1 << std::setw(12) << std::fixed
-          << std::setprecision(1) << paper_table_1[p] << "  |";
-      nlohmann::json row;
-      row["paper_mode"] = p + 1;
-      row["paper_hz"]   = paper_table_1[p];
-      for (unsigned int m = 0; m < models.size(); ++m)
       {
-        unsigned int best = 0;
-        for (unsigned int j = 1; j < models[m].f.size(); ++j)
-          if (std::abs(models[m].f[j] - paper_table_1[p]) <
-              std::abs(models[m].f[best] - paper_table_1[p]))
-            best = j;
-        const double diff = paper_table_1[p] / models[m].f[best] - 1;
-        if (std::abs(diff) < 0.01)
-          matched[m][best] = true;
-        nearest[p].push_back(best);
-        std::ostringstream cell;
-        cell << " " << std::fixed << std::setw(8) << std::setprecision(1)
-             << models[m].f[best] << " (" << models[m].kinds[best].name()
-             << ") " << percent(diff);
-        out << std::left << std::setw(33) << cell.str() << std::right << "|";
-        const std::string key  = models[m].model == PlaneModel::plane_strain
-                                   ? "plane_strain"
-                                   : "plane_stress";
-        row[key + "_hz"]       = models[m].f[best];
-        row[key + "_kind"]     = models[m].kinds[best].name();
-        row[key + "_rel_diff"] = diff;
+        out << std::setw(11) << p + 1 << std::setw(12) << std::fixed
+            << std::setprecision(1) << paper_table_1[p] << "  |";
+        nlohmann::json row;
+        row["paper_mode"] = p + 1;
+        row["paper_hz"]   = paper_table_1[p];
+        for (unsigned int m = 0; m < models.size(); ++m)
+          {
+            unsigned int best = 0;
+            for (unsigned int j = 1; j < models[m].f.size(); ++j)
+              if (std::abs(models[m].f[j] - paper_table_1[p]) <
+                  std::abs(models[m].f[best] - paper_table_1[p]))
+                best = j;
+            const double diff = paper_table_1[p] / models[m].f[best] - 1;
+            if (std::abs(diff) < 0.01)
+              matched[m][best] = true;
+            nearest[p].push_back(best);
+            std::ostringstream cell;
+            cell << " " << std::fixed << std::setw(8) << std::setprecision(1)
+                 << models[m].f[best] << " (" << models[m].kinds[best].name()
+                 << ") " << percent(diff);
+            out << std::left << std::setw(33) << cell.str() << std::right
+                << "|";
+            const std::string key  = models[m].model == PlaneModel::plane_strain
+                                       ? "plane_strain"
+                                       : "plane_stress";
+            row[key + "_hz"]       = models[m].f[best];
+            row[key + "_kind"]     = models[m].kinds[best].name();
+            row[key + "_rel_diff"] = diff;
+          }
+        out << "\n";
+        comparison.push_back(row);
       }
-      out << "\n";
-      comparison.push_back(row);
-    }
     out << " (difference = paper / FE - 1; a match is a difference below "
            "1%)\n";
     for (unsigned int m = 0; m < models.size(); ++m)
-    {
-      unsigned int n_matched = 0;
-      for (const bool b : matched[m])
-        n_matched += b;
-      out << " " << to_string(models[m].model) << ": matches " << n_matched
-          << " of the " << paper_table_1.size()
-          << " paper modes; its modes below the cutoff that the paper does "
-             "not list:";
-      bool any = false;
-      for (unsigned int j = 0; j < models[m].f.size(); ++j)
-        if (!matched[m][j])
-        {
-          out << " " << std::setprecision(1) << models[m].f[j] << " Hz ("
-              << models[m].kinds[j].name() << ")";
-          any = true;
-        }
-      out << (any ? "\n" : " none\n");
-    }
+      {
+        unsigned int n_matched = 0;
+        for (const bool b : matched[m])
+          n_matched += b;
+        out << " " << to_string(models[m].model) << ": matches " << n_matched
+            << " of the " << paper_table_1.size()
+            << " paper modes; its modes below the cutoff that the paper does "
+               "not list:";
+        bool any = false;
+        for (unsigned int j = 0; j < models[m].f.size(); ++j)
+          if (!matched[m][j])
+            {
+              out << " " << std::setprecision(1) << models[m].f[j] << " Hz ("
+                  << models[m].kinds[j].name() << ")";
+              any = true;
+            }
+        out << (any ? "\n" : " none\n");
+      }
 
     // Name the paper modes that the better-matching model does not explain.
-    const auto n_matches = [&](const unsigned int m)
-    {
+    const auto n_matches = [&](const unsigned int m) {
       return std::count(matched[m].begin(), matched[m].end(), true);
     };
     const unsigned int main_model = n_matches(0) >= n_matches(1) ? 0 : 1;
     const unsigned int other      = 1 - main_model;
     for (unsigned int p = 0; p < paper_table_1.size(); ++p)
-    {
-      const unsigned int jm  = nearest[p][main_model];
-      const unsigned int jo  = nearest[p][other];
-      const double       dm  = paper_table_1[p] / models[main_model].f[jm] - 1;
-      const double       d_o = paper_table_1[p] / models[other].f[jo] - 1;
-      if (std::abs(dm) < 0.01)
-        continue;
-      out << " paper mode " << p + 1 << " (" << paper_table_1[p]
-          << " Hz) is no " << to_string(models[main_model].model)
-          << " mode (nearest: " << models[main_model].kinds[jm].name() << ", "
-          << percent(dm) << ")";
-      if (std::abs(d_o) < 0.01)
       {
-        out << " but the " << to_string(models[other].model) << " "
-            << models[other].kinds[jo].name() << " mode (" << percent(d_o)
-            << ")";
-        if (!models[other].kinds[jo].bending)
-        {
-          const auto beam =
-            BeamTheory::Beam::of(description, models[other].model);
-          out << ", i.e. the bar value (2n-1) c / (4L) = "
-              << BeamTheory::axial_frequency(beam,
-                                             models[other].kinds[jo].order)
-              << " Hz with c = sqrt(E / rho)";
-        }
+        const unsigned int jm = nearest[p][main_model];
+        const unsigned int jo = nearest[p][other];
+        const double       dm = paper_table_1[p] / models[main_model].f[jm] - 1;
+        const double       d_o = paper_table_1[p] / models[other].f[jo] - 1;
+        if (std::abs(dm) < 0.01)
+          continue;
+        out << " paper mode " << p + 1 << " (" << paper_table_1[p]
+            << " Hz) is no " << to_string(models[main_model].model)
+            << " mode (nearest: " << models[main_model].kinds[jm].name() << ", "
+            << percent(dm) << ")";
+        if (std::abs(d_o) < 0.01)
+          {
+            out << " but the " << to_string(models[other].model) << " "
+                << models[other].kinds[jo].name() << " mode (" << percent(d_o)
+                << ")";
+            if (!models[other].kinds[jo].bending)
+              {
+                const auto beam =
+                  BeamTheory::Beam::of(description, models[other].model);
+                out
+                  << ", i.e. the bar value (2n-1) c / (4L) = "
+                  << BeamTheory::axial_frequency(beam,
+                                                 models[other].kinds[jo].order)
+                  << " Hz with c = sqrt(E / rho)";
+              }
+          }
+        out << ".\n";
       }
-      out << ".\n";
-    }
     say(out.str());
     results["paper_comparison"] = comparison;
   }
@@ -514,85 +520,88 @@ namespace Step1
     const ModalSolver  solver(parameters.modal);
     results["convergence"] = nlohmann::json::array();
     for (const ComponentDescription &description : scene.components)
-    {
-      std::vector<std::vector<double>>           frequencies;
-      std::vector<unsigned int>                  n_dofs;
-      std::vector<double>                        max_residual;
-      std::vector<std::map<std::string, double>> times;
-      for (unsigned int r = 0; r <= parameters.convergence_refinements; ++r)
       {
-        TimerOutput     level_timer(std::cout,
-                                TimerOutput::never,
-                                TimerOutput::wall_times);
-        const Component component(description,
-                                  scene.plane_model,
-                                  parameters.mesh_refinements + r,
-                                  &level_timer);
-        ModalBasis      basis;
-        {
-          TimerOutput::Scope scope(level_timer, "eigenvalues (ARPACK)");
-          basis = solver.solve(component.stiffness_matrix(),
-                               component.mass_matrix(),
-                               "Component " + description.name);
-        }
-        frequencies.push_back(basis.frequencies());
-        n_dofs.push_back(component.n_dofs());
-        max_residual.push_back(basis.max_residual());
-        times.push_back(
-          level_timer.get_summary_data(TimerOutput::total_wall_time));
+        std::vector<std::vector<double>>           frequencies;
+        std::vector<unsigned int>                  n_dofs;
+        std::vector<double>                        max_residual;
+        std::vector<std::map<std::string, double>> times;
+        for (unsigned int r = 0; r <= parameters.convergence_refinements; ++r)
+          {
+            TimerOutput     level_timer(std::cout,
+                                    TimerOutput::never,
+                                    TimerOutput::wall_times);
+            const Component component(description,
+                                      scene.plane_model,
+                                      parameters.mesh_refinements + r,
+                                      &level_timer);
+            ModalBasis      basis;
+            {
+              TimerOutput::Scope scope(level_timer, "eigenvalues (ARPACK)");
+              basis = solver.solve(component.stiffness_matrix(),
+                                   component.mass_matrix(),
+                                   "Component " + description.name);
+            }
+            frequencies.push_back(basis.frequencies());
+            n_dofs.push_back(component.n_dofs());
+            max_residual.push_back(basis.max_residual());
+            times.push_back(
+              level_timer.get_summary_data(TimerOutput::total_wall_time));
+          }
+
+        const unsigned int  n_levels     = frequencies.size();
+        const unsigned int  n_modes      = frequencies[0].size();
+        std::vector<double> extrapolated = frequencies.back();
+        const double factor = std::pow(2., 2. * description.fe_degree) - 1.;
+        if (n_levels >= 2)
+          for (unsigned int j = 0; j < n_modes; ++j)
+            extrapolated[j] +=
+              (frequencies[n_levels - 1][j] - frequencies[n_levels - 2][j]) /
+              factor;
+
+        std::ostringstream out;
+        out << "\nMesh convergence, component " << description.name << "\n"
+            << "  DoFs   mesh+DoFs [s]  assembly [s]  ARPACK [s]   f1 [Hz]"
+               "      f1 error  f"
+            << n_modes << " [Hz]      f" << n_modes << " error  max residual\n";
+        for (unsigned int r = 0; r < n_levels; ++r)
+          {
+            const double total = times[r]["mesh and DoFs"] +
+                                 times[r]["assembly"] +
+                                 times[r]["eigenvalues (ARPACK)"];
+            out << std::setw(7) << n_dofs[r] << std::fixed
+                << std::setprecision(3) << std::setw(14)
+                << times[r]["mesh and DoFs"] << std::setw(14)
+                << times[r]["assembly"] << std::setw(12)
+                << times[r]["eigenvalues (ARPACK)"] << std::setprecision(4)
+                << std::setw(12) << frequencies[r][0] << std::setw(12)
+                << scientific(frequencies[r][0] / extrapolated[0] - 1)
+                << std::setprecision(2) << std::setw(12)
+                << frequencies[r][n_modes - 1] << std::setw(12)
+                << scientific(frequencies[r][n_modes - 1] /
+                                extrapolated[n_modes - 1] -
+                              1)
+                << std::setw(14) << scientific(max_residual[r]) << "\n";
+
+            nlohmann::json level;
+            level["component"]      = description.name;
+            level["refinement"]     = parameters.mesh_refinements + r;
+            level["n_dofs"]         = n_dofs[r];
+            level["frequencies_hz"] = frequencies[r];
+            level["max_residual"]   = max_residual[r];
+            level["time_s"]         = total;
+            level["stage_times_s"]  = times[r];
+            results["convergence"].push_back(level);
+          }
+        out << " extrapolated (Richardson, error ~ h^"
+            << 2 * description.fe_degree << "): f1 = " << std::setprecision(4)
+            << extrapolated[0] << " Hz, f" << n_modes << " = "
+            << std::setprecision(2) << extrapolated[n_modes - 1]
+            << " Hz; errors are relative to it.\n"
+            << " The residual floor grows like eps * lambda_max / lambda_1 "
+               "~ h^-2 (round-off, see doc/modal-analysis.md).\n";
+        say(out.str());
+        results["extrapolated_frequencies_hz"][description.name] = extrapolated;
       }
-
-      const unsigned int  n_levels     = frequencies.size();
-      const unsigned int  n_modes      = frequencies[0].size();
-      std::vector<double> extrapolated = frequencies.back();
-      const double factor = std::pow(2., 2. * description.fe_degree) - 1.;
-      if (n_levels >= 2)
-        for (unsigned int j = 0; j < n_modes; ++j)
-          extrapolated[j] +=
-            (frequencies[n_levels - 1][j] - frequencies[n_levels - 2][j]) /
-            factor;
-
-      std::ostringstream out;
-      out << "\nMesh convergence, component " << description.name << "\n"
-          << "  DoFs   mesh+DoFs [s]  assembly [s]  ARPACK [s]   f1 [Hz]"
-             "      f1 error  f"
-          << n_modes << " [Hz]      f" << n_modes << " error  max residual\n";
-      for (unsigned int r = 0; r < n_levels; ++r)
-      {
-        const double total = times[r]["mesh and DoFs"] + times[r]["assembly"] +
-                             times[r]["eigenvalues (ARPACK)"];
-        out << std::setw(7) << n_dofs[r] << std::fixed << std::setprecision(3)
-            << std::setw(14) << times[r]["mesh and DoFs"] << std::setw(14)
-            << times[r]["assembly"] << std::setw(12)
-            << times[r]["eigenvalues (ARPACK)"] << std::setprecision(4)
-            << std::setw(12) << frequencies[r][0] << std::setw(12)
-            << scientific(frequencies[r][0] / extrapolated[0] - 1)
-            << std::setprecision(2) << std::setw(12)
-            << frequencies[r][n_modes - 1] << std::setw(12)
-            << scientific(
-                 frequencies[r][n_modes - 1] / extrapolated[n_modes - 1] - 1)
-            << std::setw(14) << scientific(max_residual[r]) << "\n";
-
-        nlohmann::json level;
-        level["component"]      = description.name;
-        level["refinement"]     = parameters.mesh_refinements + r;
-        level["n_dofs"]         = n_dofs[r];
-        level["frequencies_hz"] = frequencies[r];
-        level["max_residual"]   = max_residual[r];
-        level["time_s"]         = total;
-        level["stage_times_s"]  = times[r];
-        results["convergence"].push_back(level);
-      }
-      out << " extrapolated (Richardson, error ~ h^"
-          << 2 * description.fe_degree << "): f1 = " << std::setprecision(4)
-          << extrapolated[0] << " Hz, f" << n_modes << " = "
-          << std::setprecision(2) << extrapolated[n_modes - 1]
-          << " Hz; errors are relative to it.\n"
-          << " The residual floor grows like eps * lambda_max / lambda_1 "
-             "~ h^-2 (round-off, see doc/modal-analysis.md).\n";
-      say(out.str());
-      results["extrapolated_frequencies_hz"][description.name] = extrapolated;
-    }
   }
 
 
@@ -633,8 +642,7 @@ main(int argc, char **argv)
   return FuzzyContact::run_program(argc,
                                    argv,
                                    "step-1",
-                                   [](const std::string &parameter_file)
-                                   {
+                                   [](const std::string &parameter_file) {
                                      Step1::ModalAnalysis analysis(
                                        parameter_file);
                                      analysis.run();

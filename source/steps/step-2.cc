@@ -107,36 +107,36 @@ namespace Step2
       ModalParameters::declare_parameters(prm);
       ReanalysisSettings::declare_parameters(prm);
       for (const std::string &name : case_names)
-      {
-        prm.enter_subsection("Case " + name);
-        prm.declare_entry("description",
-                          "",
-                          Patterns::Anything(),
-                          "One line saying what the case shows.");
-        prm.declare_entry("scene",
-                          "cantilever-zones.prm",
-                          Patterns::Anything(),
-                          "Scene file, relative to this parameter file.");
-        prm.declare_entry("component",
-                          "",
-                          Patterns::Anything(),
-                          "The component whose modes are reanalysed.",
-                          /*has_to_be_set=*/true);
-        prm.declare_entry("parameters",
-                          "",
-                          Patterns::Anything(),
-                          "The parameters declared variable: "
-                          "<component>.<zone>.<E|rho> or "
-                          "<component>.<E|rho>, comma-separated.",
-                          /*has_to_be_set=*/true);
-        prm.declare_entry("changes in percent",
-                          "",
-                          Patterns::Anything(),
-                          "Samples separated by ';', each a comma-separated "
-                          "list of relative changes [%], one per parameter.",
-                          /*has_to_be_set=*/true);
-        prm.leave_subsection();
-      }
+        {
+          prm.enter_subsection("Case " + name);
+          prm.declare_entry("description",
+                            "",
+                            Patterns::Anything(),
+                            "One line saying what the case shows.");
+          prm.declare_entry("scene",
+                            "cantilever-zones.prm",
+                            Patterns::Anything(),
+                            "Scene file, relative to this parameter file.");
+          prm.declare_entry("component",
+                            "",
+                            Patterns::Anything(),
+                            "The component whose modes are reanalysed.",
+                            /*has_to_be_set=*/true);
+          prm.declare_entry("parameters",
+                            "",
+                            Patterns::Anything(),
+                            "The parameters declared variable: "
+                            "<component>.<zone>.<E|rho> or "
+                            "<component>.<E|rho>, comma-separated.",
+                            /*has_to_be_set=*/true);
+          prm.declare_entry("changes in percent",
+                            "",
+                            Patterns::Anything(),
+                            "Samples separated by ';', each a comma-separated "
+                            "list of relative changes [%], one per parameter.",
+                            /*has_to_be_set=*/true);
+          prm.leave_subsection();
+        }
     }
 
     void
@@ -158,49 +158,51 @@ namespace Step2
       AssertThrow(!names.empty(), ExcMessage("cases: no case is listed."));
       cases.clear();
       for (const std::string &name : names)
-      {
-        const std::string what = "Case " + name;
-        prm.enter_subsection(what);
-        CaseDescription c;
-        c.name        = name;
-        c.description = Utilities::trim(prm.get("description"));
-        c.scene_file =
-          Input::resolve_relative_to(Utilities::trim(prm.get("scene")),
-                                     prm_file);
-        c.component = Utilities::trim(prm.get("component"));
-        AssertThrow(!c.component.empty(),
-                    ExcMessage(what + ": component must not be empty."));
-        for (const std::string &p :
-             Utilities::split_string_list(prm.get("parameters"), ','))
-          c.parameters.push_back(p);
-        AssertThrow(!c.parameters.empty(),
-                    ExcMessage(what + ": no parameter is declared variable."));
-        const std::vector<std::string> samples =
-          Utilities::split_string_list(prm.get("changes in percent"), ';');
-        AssertThrow(!samples.empty(),
-                    ExcMessage(what + ": 'changes in percent' lists no "
-                                      "sample."));
-        for (unsigned int s = 0; s < samples.size(); ++s)
         {
-          const std::string sample_what = what + ", sample " +
-                                          std::to_string(s + 1) +
-                                          " of 'changes in percent'";
-          const std::vector<double> percent =
-            Input::to_doubles(samples[s], sample_what);
-          AssertThrow(percent.size() == c.parameters.size(),
-                      ExcMessage(
-                        sample_what + ": " + std::to_string(percent.size()) +
-                        " changes given for " +
-                        std::to_string(c.parameters.size()) + " parameters."));
-          std::vector<double> relative;
-          for (const double p : percent)
-            relative.push_back(p / 100.);
-          c.samples.push_back(relative);
-          c.samples_percent.push_back(percent);
+          const std::string what = "Case " + name;
+          prm.enter_subsection(what);
+          CaseDescription c;
+          c.name        = name;
+          c.description = Utilities::trim(prm.get("description"));
+          c.scene_file =
+            Input::resolve_relative_to(Utilities::trim(prm.get("scene")),
+                                       prm_file);
+          c.component = Utilities::trim(prm.get("component"));
+          AssertThrow(!c.component.empty(),
+                      ExcMessage(what + ": component must not be empty."));
+          for (const std::string &p :
+               Utilities::split_string_list(prm.get("parameters"), ','))
+            c.parameters.push_back(p);
+          AssertThrow(!c.parameters.empty(),
+                      ExcMessage(what +
+                                 ": no parameter is declared variable."));
+          const std::vector<std::string> samples =
+            Utilities::split_string_list(prm.get("changes in percent"), ';');
+          AssertThrow(!samples.empty(),
+                      ExcMessage(what + ": 'changes in percent' lists no "
+                                        "sample."));
+          for (unsigned int s = 0; s < samples.size(); ++s)
+            {
+              const std::string sample_what = what + ", sample " +
+                                              std::to_string(s + 1) +
+                                              " of 'changes in percent'";
+              const std::vector<double> percent =
+                Input::to_doubles(samples[s], sample_what);
+              AssertThrow(percent.size() == c.parameters.size(),
+                          ExcMessage(sample_what + ": " +
+                                     std::to_string(percent.size()) +
+                                     " changes given for " +
+                                     std::to_string(c.parameters.size()) +
+                                     " parameters."));
+              std::vector<double> relative;
+              for (const double p : percent)
+                relative.push_back(p / 100.);
+              c.samples.push_back(relative);
+              c.samples_percent.push_back(percent);
+            }
+          prm.leave_subsection();
+          cases.push_back(c);
         }
-        prm.leave_subsection();
-        cases.push_back(c);
-      }
     }
   };
 
@@ -241,10 +243,11 @@ namespace Step2
     Timer        timer;
     unsigned int calls = 0;
     do
-    {
-      f();
-      ++calls;
-    } while (timer.wall_time() < min_seconds);
+      {
+        f();
+        ++calls;
+      }
+    while (timer.wall_time() < min_seconds);
     return timer.wall_time() / calls;
   }
 
@@ -307,58 +310,59 @@ namespace Step2
   ModalReanalysis::check_cases()
   {
     for (const CaseDescription &c : parameters.cases)
-    {
-      if (scenes.find(c.scene_file) == scenes.end())
-        scenes[c.scene_file] = Scene::read(c.scene_file);
-      const Scene                &scene = scenes[c.scene_file];
-      const ComponentDescription &component =
-        scene.components[scene.component_index(c.component)];
-      std::vector<ReanalysisParameter> declared;
-      for (const std::string &name : c.parameters)
       {
+        if (scenes.find(c.scene_file) == scenes.end())
+          scenes[c.scene_file] = Scene::read(c.scene_file);
+        const Scene                &scene = scenes[c.scene_file];
+        const ComponentDescription &component =
+          scene.components[scene.component_index(c.component)];
+        std::vector<ReanalysisParameter> declared;
+        for (const std::string &name : c.parameters)
+          {
+            try
+              {
+                declared.push_back(ReanalysisParameter::parse(name, component));
+              }
+            catch (const ExceptionBase &e)
+              {
+                AssertThrow(false,
+                            ExcMessage("Case " + c.name + ": " +
+                                       Input::message_of(e)));
+              }
+          }
         try
-        {
-          declared.push_back(ReanalysisParameter::parse(name, component));
-        }
+          {
+            check_distinct(declared);
+          }
         catch (const ExceptionBase &e)
-        {
-          AssertThrow(false,
-                      ExcMessage("Case " + c.name + ": " +
-                                 Input::message_of(e)));
-        }
+          {
+            AssertThrow(false,
+                        ExcMessage("Case " + c.name + ": " +
+                                   Input::message_of(e)));
+          }
+        std::vector<double> moduli, densities;
+        for (const MaterialZone &zone : component.zones)
+          {
+            moduli.push_back(zone.youngs_modulus);
+            densities.push_back(zone.density);
+          }
+        for (unsigned int s = 0; s < c.samples.size(); ++s)
+          try
+            {
+              perturbed_zone_materials(component,
+                                       declared,
+                                       moduli,
+                                       densities,
+                                       c.samples[s]);
+            }
+          catch (const ExceptionBase &e)
+            {
+              AssertThrow(false,
+                          ExcMessage("Case " + c.name + ", sample " +
+                                     std::to_string(s + 1) + ": " +
+                                     Input::message_of(e)));
+            }
       }
-      try
-      {
-        check_distinct(declared);
-      }
-      catch (const ExceptionBase &e)
-      {
-        AssertThrow(false,
-                    ExcMessage("Case " + c.name + ": " + Input::message_of(e)));
-      }
-      std::vector<double> moduli, densities;
-      for (const MaterialZone &zone : component.zones)
-      {
-        moduli.push_back(zone.youngs_modulus);
-        densities.push_back(zone.density);
-      }
-      for (unsigned int s = 0; s < c.samples.size(); ++s)
-        try
-        {
-          perturbed_zone_materials(component,
-                                   declared,
-                                   moduli,
-                                   densities,
-                                   c.samples[s]);
-        }
-        catch (const ExceptionBase &e)
-        {
-          AssertThrow(false,
-                      ExcMessage("Case " + c.name + ", sample " +
-                                 std::to_string(s + 1) + ": " +
-                                 Input::message_of(e)));
-        }
-    }
   }
 
 
@@ -422,10 +426,10 @@ namespace Step2
     bool any_cluster = false;
     for (const auto &cluster : clusters)
       if (cluster.size() > 1)
-      {
-        out << " " << describe_modes(nominal, cluster) << ";";
-        any_cluster = true;
-      }
+        {
+          out << " " << describe_modes(nominal, cluster) << ";";
+          any_cluster = true;
+        }
     out << (any_cluster ? " each is expanded as a subspace\n" : " none\n");
     if (n_basis > n_modes)
       out << " mode " << n_modes
@@ -437,48 +441,48 @@ namespace Step2
     std::vector<double>                            offline_time;
     const ParameterIndependentReanalysis          *pi = nullptr;
     for (const std::string &name : parameters.methods)
-    {
-      Timer t;
-      if (name == "taylor")
-        methods.push_back(
-          std::make_unique<FirstOrderTaylor>(model,
-                                             nominal,
-                                             settings.cluster_gap));
-      else if (name == "ca")
-        methods.push_back(std::make_unique<CombinedApproximations>(
-          model,
-          nominal,
-          settings.truncation_tolerance));
-      else if (name == "hptp")
-        methods.push_back(
-          std::make_unique<HomotopyPerturbation>(model,
-                                                 nominal,
-                                                 settings.truncation_tolerance,
-                                                 settings.cluster_gap));
-      else
       {
-        auto p = std::make_unique<ParameterIndependentReanalysis>();
-        p->offline(component,
-                   nominal,
-                   c.parameters,
-                   settings.max_order,
-                   settings.truncation_tolerance,
-                   settings.cluster_gap);
-        pi = p.get();
-        methods.push_back(std::move(p));
+        Timer t;
+        if (name == "taylor")
+          methods.push_back(
+            std::make_unique<FirstOrderTaylor>(model,
+                                               nominal,
+                                               settings.cluster_gap));
+        else if (name == "ca")
+          methods.push_back(std::make_unique<CombinedApproximations>(
+            model,
+            nominal,
+            settings.truncation_tolerance));
+        else if (name == "hptp")
+          methods.push_back(std::make_unique<HomotopyPerturbation>(
+            model,
+            nominal,
+            settings.truncation_tolerance,
+            settings.cluster_gap));
+        else
+          {
+            auto p = std::make_unique<ParameterIndependentReanalysis>();
+            p->offline(component,
+                       nominal,
+                       c.parameters,
+                       settings.max_order,
+                       settings.truncation_tolerance,
+                       settings.cluster_gap);
+            pi = p.get();
+            methods.push_back(std::move(p));
+          }
+        offline_time.push_back(t.wall_time());
       }
-      offline_time.push_back(t.wall_time());
-    }
     out << " offline [s]:";
     for (unsigned int m = 0; m < methods.size(); ++m)
       out << " " << methods[m]->name() << " " << fixed(offline_time[m], 3);
     if (pi != nullptr)
-    {
-      out << "\n hptp-pi basis size by order (truncation tolerance "
-          << scientific(settings.truncation_tolerance) << "):";
-      for (unsigned int p = 0; p <= pi->max_order(); ++p)
-        out << " " << p << ": " << pi->basis_size(p);
-    }
+      {
+        out << "\n hptp-pi basis size by order (truncation tolerance "
+            << scientific(settings.truncation_tolerance) << "):";
+        for (unsigned int p = 0; p <= pi->max_order(); ++p)
+          out << " " << p << ": " << pi->basis_size(p);
+      }
     out << "\n";
     say(out.str());
 
@@ -492,12 +496,12 @@ namespace Step2
     info["clusters"]    = nlohmann::json::array();
     for (const auto &cluster : clusters)
       if (cluster.size() > 1)
-      {
-        std::vector<unsigned int> one_based;
-        for (const unsigned int j : cluster)
-          one_based.push_back(j + 1);
-        info["clusters"].push_back(one_based);
-      }
+        {
+          std::vector<unsigned int> one_based;
+          for (const unsigned int j : cluster)
+            one_based.push_back(j + 1);
+          info["clusters"].push_back(one_based);
+        }
     for (unsigned int m = 0; m < methods.size(); ++m)
       info["time_offline_s"][methods[m]->name()] = offline_time[m];
     if (pi != nullptr)
@@ -507,10 +511,10 @@ namespace Step2
 
     std::unique_ptr<ResidualCheck> residual_check;
     if (settings.residual_check)
-    {
-      TimerOutput::Scope scope(timer, "residual check: K0 factorisation");
-      residual_check = std::make_unique<ResidualCheck>(model);
-    }
+      {
+        TimerOutput::Scope scope(timer, "residual check: K0 factorisation");
+        residual_check = std::make_unique<ResidualCheck>(model);
+      }
 
     const ExactResolve exact_n(model, parameters.modal);
     ModalParameters    for_matching = parameters.modal;
@@ -518,273 +522,279 @@ namespace Step2
     const ExactResolve exact_matching(model, for_matching);
 
     for (unsigned int s = 0; s < c.samples.size(); ++s)
-    {
-      const std::vector<double> &t     = c.samples[s];
-      const std::string          label = changes_label(c.samples_percent[s]);
-      const std::string          name  = c.name + " " + label;
+      {
+        const std::vector<double> &t     = c.samples[s];
+        const std::string          label = changes_label(c.samples_percent[s]);
+        const std::string          name  = c.name + " " + label;
 
-      // The reference: its time is that of the n_modes wanted; a second
-      // solve with more modes serves the matching of reordered modes.
-      ModalBasis exact;
-      double     time_exact;
-      {
-        TimerOutput::Scope scope(timer, "exact re-solves (ARPACK)");
-        Timer              tt;
-        exact_n.solve(t);
-        time_exact = tt.wall_time();
-        exact      = exact_matching.solve(t);
-      }
-      SparseMatrix<double> K, M;
-      model.matrices(t, K, M);
-
-      struct Row
-      {
-        std::string      method;
-        unsigned int     order;
-        ReanalysisResult result;
-        ModeComparison   comparison;
-        double           residual = std::numeric_limits<double>::quiet_NaN();
-        double energy_residual    = std::numeric_limits<double>::quiet_NaN();
-        double time_online;
-        double time_offline;
-        double estimate = std::numeric_limits<double>::quiet_NaN();
-        double change   = std::numeric_limits<double>::quiet_NaN();
-        bool   selected = false;
-        bool   not_met  = false;
-      };
-      std::vector<Row> rows;
-      {
-        TimerOutput::Scope scope(timer, "reanalyses");
-        for (unsigned int m = 0; m < methods.size(); ++m)
+        // The reference: its time is that of the n_modes wanted; a second
+        // solve with more modes serves the matching of reordered modes.
+        ModalBasis exact;
+        double     time_exact;
         {
-          const ReanalysisMethod &method = *methods[m];
-          const unsigned int      max_order =
-            method.has_order() ? settings.max_order : 1;
-          std::vector<Row> own;
-          for (unsigned int order = 1; order <= max_order; ++order)
-          {
-            Row row;
-            row.method       = method.name();
-            row.order        = order;
-            row.time_offline = offline_time[m];
-            if (pi != nullptr && &method == pi)
+          TimerOutput::Scope scope(timer, "exact re-solves (ARPACK)");
+          Timer              tt;
+          exact_n.solve(t);
+          time_exact = tt.wall_time();
+          exact      = exact_matching.solve(t);
+        }
+        SparseMatrix<double> K, M;
+        model.matrices(t, K, M);
+
+        struct Row
+        {
+          std::string      method;
+          unsigned int     order;
+          ReanalysisResult result;
+          ModeComparison   comparison;
+          double           residual = std::numeric_limits<double>::quiet_NaN();
+          double energy_residual    = std::numeric_limits<double>::quiet_NaN();
+          double time_online;
+          double time_offline;
+          double estimate = std::numeric_limits<double>::quiet_NaN();
+          double change   = std::numeric_limits<double>::quiet_NaN();
+          bool   selected = false;
+          bool   not_met  = false;
+        };
+        std::vector<Row> rows;
+        {
+          TimerOutput::Scope scope(timer, "reanalyses");
+          for (unsigned int m = 0; m < methods.size(); ++m)
             {
-              // The online stage proper: eigenvalues and Y, no n_dofs work.
-              row.time_online = time_per_call(
-                [&]()
+              const ReanalysisMethod &method = *methods[m];
+              const unsigned int      max_order =
+                method.has_order() ? settings.max_order : 1;
+              std::vector<Row> own;
+              for (unsigned int order = 1; order <= max_order; ++order)
                 {
-                  pi->online(t, order);
-                });
-              row.result = pi->reanalyse(t, order);
-            }
-            else
-              row.time_online = time_per_call(
-                [&]()
-                {
-                  row.result = method.reanalyse(t, order);
-                });
-            row.comparison =
-              compare_modes(row.result.eigenvalues, row.result.modes, exact, M);
-            if (residual_check)
-            {
-              const ResidualCheck::Residuals r =
-                residual_check->check(t,
-                                      row.result.eigenvalues,
-                                      row.result.modes);
-              row.residual = *std::max_element(r.relative.begin(),
-                                               r.relative.begin() + n_modes);
-              row.energy_residual =
-                *std::max_element(r.energy.begin(), r.energy.begin() + n_modes);
-            }
-            own.push_back(std::move(row));
-          }
-          // The order a tolerance asks for. Two a-posteriori estimates of
-          // the relative frequency error of order n: the change to order
-          // n + 1 (Ritz values on nested bases decrease towards the exact
-          // ones, so this is a lower estimate), and, with the residual
-          // check, eta^2 / 2 from the energy-norm residual eta (which also
-          // sees a method that stagnates, and covers the highest order).
-          // The order is the lowest whose estimates meet the tolerance.
-          if (method.has_order())
-          {
-            unsigned int chosen = own.size();
-            for (unsigned int i = 0; i < own.size(); ++i)
-            {
-              double estimate = -1;
-              if (i + 1 < own.size())
-              {
-                double change = 0;
-                for (unsigned int j = 0; j < n_modes; ++j)
-                {
-                  const double a = std::sqrt(own[i].result.eigenvalues[j]);
-                  const double b = std::sqrt(own[i + 1].result.eigenvalues[j]);
-                  change         = std::max(change, std::abs(a - b) / b);
+                  Row row;
+                  row.method       = method.name();
+                  row.order        = order;
+                  row.time_offline = offline_time[m];
+                  if (pi != nullptr && &method == pi)
+                    {
+                      // The online stage proper: eigenvalues and Y, no n_dofs
+                      // work.
+                      row.time_online = time_per_call([&]() {
+                        pi->online(t, order);
+                      });
+                      row.result      = pi->reanalyse(t, order);
+                    }
+                  else
+                    row.time_online = time_per_call([&]() {
+                      row.result = method.reanalyse(t, order);
+                    });
+                  row.comparison = compare_modes(row.result.eigenvalues,
+                                                 row.result.modes,
+                                                 exact,
+                                                 M);
+                  if (residual_check)
+                    {
+                      const ResidualCheck::Residuals r =
+                        residual_check->check(t,
+                                              row.result.eigenvalues,
+                                              row.result.modes);
+                      row.residual =
+                        *std::max_element(r.relative.begin(),
+                                          r.relative.begin() + n_modes);
+                      row.energy_residual =
+                        *std::max_element(r.energy.begin(),
+                                          r.energy.begin() + n_modes);
+                    }
+                  own.push_back(std::move(row));
                 }
-                own[i].change = change;
-                estimate      = change;
-              }
-              if (std::isfinite(own[i].energy_residual))
-                estimate = std::max(estimate,
-                                    0.5 * own[i].energy_residual *
-                                      own[i].energy_residual);
-              if (estimate >= 0)
-                own[i].estimate = estimate;
-              if (estimate >= 0 && estimate <= settings.order_tolerance &&
-                  chosen == own.size())
-                chosen = i;
+              // The order a tolerance asks for. Two a-posteriori estimates of
+              // the relative frequency error of order n: the change to order
+              // n + 1 (Ritz values on nested bases decrease towards the exact
+              // ones, so this is a lower estimate), and, with the residual
+              // check, eta^2 / 2 from the energy-norm residual eta (which also
+              // sees a method that stagnates, and covers the highest order).
+              // The order is the lowest whose estimates meet the tolerance.
+              if (method.has_order())
+                {
+                  unsigned int chosen = own.size();
+                  for (unsigned int i = 0; i < own.size(); ++i)
+                    {
+                      double estimate = -1;
+                      if (i + 1 < own.size())
+                        {
+                          double change = 0;
+                          for (unsigned int j = 0; j < n_modes; ++j)
+                            {
+                              const double a =
+                                std::sqrt(own[i].result.eigenvalues[j]);
+                              const double b =
+                                std::sqrt(own[i + 1].result.eigenvalues[j]);
+                              change = std::max(change, std::abs(a - b) / b);
+                            }
+                          own[i].change = change;
+                          estimate      = change;
+                        }
+                      if (std::isfinite(own[i].energy_residual))
+                        estimate = std::max(estimate,
+                                            0.5 * own[i].energy_residual *
+                                              own[i].energy_residual);
+                      if (estimate >= 0)
+                        own[i].estimate = estimate;
+                      if (estimate >= 0 &&
+                          estimate <= settings.order_tolerance &&
+                          chosen == own.size())
+                        chosen = i;
+                    }
+                  if (chosen == own.size())
+                    {
+                      chosen              = own.size() - 1;
+                      own[chosen].not_met = true;
+                    }
+                  own[chosen].selected = true;
+                }
+              else
+                own[0].selected = true;
+              for (Row &r : own)
+                rows.push_back(std::move(r));
             }
-            if (chosen == own.size())
+        }
+
+        // Only the lowest n_modes are reported (the comparison covered the
+        // whole cluster-completed basis).
+        const auto measure = [&](const Row &row) {
+          double max_error = 0, min_mac = 1;
+          for (unsigned int j = 0; j < n_modes; ++j)
             {
-              chosen              = own.size() - 1;
-              own[chosen].not_met = true;
+              max_error = std::max(max_error, row.comparison.relative_error[j]);
+              min_mac   = std::min(min_mac, row.comparison.mac[j]);
             }
-            own[chosen].selected = true;
+          return std::make_pair(max_error, min_mac);
+        };
+
+        std::ostringstream table;
+        table << "\n Sample " << name << " (";
+        for (unsigned int k = 0; k < model.n_parameters(); ++k)
+          table << (k ? ", " : "") << model.parameter(k).name << " "
+                << std::showpos << c.samples_percent[s][k] << std::noshowpos
+                << " %";
+        table << "): exact re-solve " << fixed(time_exact, 3) << " s\n"
+              << "  method   order  basis  max rel. err  min MAC        "
+                 "residual  energy res.  est. error  online [s]  speed-up\n";
+        for (const Row &row : rows)
+          {
+            const auto [max_error, min_mac] = measure(row);
+            table << "  " << std::left << std::setw(9) << row.method
+                  << std::right << std::setw(5) << row.order << std::setw(7)
+                  << (row.result.basis_size
+                        ? std::to_string(row.result.basis_size)
+                        : "-")
+                  << std::setw(14) << scientific(max_error) << std::setw(14)
+                  << fixed(min_mac, 10) << std::setw(10)
+                  << scientific(row.residual) << std::setw(13)
+                  << scientific(row.energy_residual) << std::setw(12)
+                  << scientific(row.estimate) << std::setw(12)
+                  << scientific(row.time_online, 2) << std::setw(10)
+                  << fixed(time_exact / row.time_online, 0) << "x"
+                  << (row.selected && row.method != "taylor"
+                        ? (row.not_met
+                             ? "  <- tolerance " +
+                                 scientific(settings.order_tolerance, 0) +
+                                 " not met by any order"
+                             : "  <- order for tolerance " +
+                                 scientific(settings.order_tolerance, 0))
+                        : "")
+                  << "\n";
+            bool reordered = false;
+            for (unsigned int j = 0; j < n_modes; ++j)
+              reordered = reordered || row.comparison.match[j] != j;
+
+            nlohmann::json entry;
+            entry["name"]            = name;
+            entry["case"]            = c.name;
+            entry["changes_percent"] = c.samples_percent[s];
+            entry["method"]          = row.method;
+            entry["order"]           = row.order;
+            entry["basis_size"]      = row.result.basis_size;
+            entry["selected"]        = row.selected;
+            std::vector<double> f = row.result.frequencies(), ef, errors, macs;
+            std::vector<unsigned int> matched;
+            f.resize(n_modes);
+            const std::vector<double> exact_f = exact.frequencies();
+            for (unsigned int j = 0; j < n_modes; ++j)
+              {
+                ef.push_back(exact_f[row.comparison.match[j]]);
+                errors.push_back(row.comparison.relative_error[j]);
+                macs.push_back(row.comparison.mac[j]);
+                matched.push_back(row.comparison.match[j] + 1);
+              }
+            entry["frequencies_hz"]  = f;
+            entry["exact_hz"]        = ef;
+            entry["exact_mode"]      = matched;
+            entry["reordered"]       = reordered;
+            entry["relative_errors"] = errors;
+            entry["macs"]            = macs;
+            entry["max_rel_error"]   = max_error;
+            entry["min_mac"]         = min_mac;
+            if (std::isfinite(row.residual))
+              {
+                entry["max_residual"]        = row.residual;
+                entry["max_energy_residual"] = row.energy_residual;
+              }
+            if (std::isfinite(row.estimate))
+              entry["estimated_error"] = row.estimate;
+            if (std::isfinite(row.change))
+              entry["change_to_next_order"] = row.change;
+            if (row.selected && row.method != "taylor")
+              entry["tolerance_met"] = !row.not_met;
+            entry["time_online_s"]  = row.time_online;
+            entry["time_offline_s"] = row.time_offline;
+            entry["time_exact_s"]   = time_exact;
+            results["cases"].push_back(entry);
           }
-          else
-            own[0].selected = true;
-          for (Row &r : own)
-            rows.push_back(std::move(r));
-        }
-      }
 
-      // Only the lowest n_modes are reported (the comparison covered the
-      // whole cluster-completed basis).
-      const auto measure = [&](const Row &row)
-      {
-        double max_error = 0, min_mac = 1;
-        for (unsigned int j = 0; j < n_modes; ++j)
-        {
-          max_error = std::max(max_error, row.comparison.relative_error[j]);
-          min_mac   = std::min(min_mac, row.comparison.mac[j]);
-        }
-        return std::make_pair(max_error, min_mac);
-      };
-
-      std::ostringstream table;
-      table << "\n Sample " << name << " (";
-      for (unsigned int k = 0; k < model.n_parameters(); ++k)
-        table << (k ? ", " : "") << model.parameter(k).name << " "
-              << std::showpos << c.samples_percent[s][k] << std::noshowpos
-              << " %";
-      table << "): exact re-solve " << fixed(time_exact, 3) << " s\n"
-            << "  method   order  basis  max rel. err  min MAC        "
-               "residual  energy res.  est. error  online [s]  speed-up\n";
-      for (const Row &row : rows)
-      {
-        const auto [max_error, min_mac] = measure(row);
-        table << "  " << std::left << std::setw(9) << row.method << std::right
-              << std::setw(5) << row.order << std::setw(7)
-              << (row.result.basis_size ? std::to_string(row.result.basis_size)
-                                        : "-")
-              << std::setw(14) << scientific(max_error) << std::setw(14)
-              << fixed(min_mac, 10) << std::setw(10) << scientific(row.residual)
-              << std::setw(13) << scientific(row.energy_residual)
-              << std::setw(12) << scientific(row.estimate) << std::setw(12)
-              << scientific(row.time_online, 2) << std::setw(10)
-              << fixed(time_exact / row.time_online, 0) << "x"
-              << (row.selected && row.method != "taylor"
-                    ? (row.not_met ? "  <- tolerance " +
-                                       scientific(settings.order_tolerance, 0) +
-                                       " not met by any order"
-                                   : "  <- order for tolerance " +
-                                       scientific(settings.order_tolerance, 0))
-                    : "")
-              << "\n";
-        bool reordered = false;
-        for (unsigned int j = 0; j < n_modes; ++j)
-          reordered = reordered || row.comparison.match[j] != j;
-
-        nlohmann::json entry;
-        entry["name"]            = name;
-        entry["case"]            = c.name;
-        entry["changes_percent"] = c.samples_percent[s];
-        entry["method"]          = row.method;
-        entry["order"]           = row.order;
-        entry["basis_size"]      = row.result.basis_size;
-        entry["selected"]        = row.selected;
-        std::vector<double> f    = row.result.frequencies(), ef, errors, macs;
-        std::vector<unsigned int> matched;
-        f.resize(n_modes);
-        const std::vector<double> exact_f = exact.frequencies();
-        for (unsigned int j = 0; j < n_modes; ++j)
-        {
-          ef.push_back(exact_f[row.comparison.match[j]]);
-          errors.push_back(row.comparison.relative_error[j]);
-          macs.push_back(row.comparison.mac[j]);
-          matched.push_back(row.comparison.match[j] + 1);
-        }
-        entry["frequencies_hz"]  = f;
-        entry["exact_hz"]        = ef;
-        entry["exact_mode"]      = matched;
-        entry["reordered"]       = reordered;
-        entry["relative_errors"] = errors;
-        entry["macs"]            = macs;
-        entry["max_rel_error"]   = max_error;
-        entry["min_mac"]         = min_mac;
-        if (std::isfinite(row.residual))
-        {
-          entry["max_residual"]        = row.residual;
-          entry["max_energy_residual"] = row.energy_residual;
-        }
-        if (std::isfinite(row.estimate))
-          entry["estimated_error"] = row.estimate;
-        if (std::isfinite(row.change))
-          entry["change_to_next_order"] = row.change;
-        if (row.selected && row.method != "taylor")
-          entry["tolerance_met"] = !row.not_met;
-        entry["time_online_s"]  = row.time_online;
-        entry["time_offline_s"] = row.time_offline;
-        entry["time_exact_s"]   = time_exact;
-        results["cases"].push_back(entry);
-      }
-
-      // Per mode, each method at its selected order.
-      std::vector<const Row *> shown;
-      for (const Row &row : rows)
-        if (row.selected)
-          shown.push_back(&row);
-      table << "  per mode, each method at the order above (error = |f - "
-               "f_exact| / f_exact; exact mode paired by MAC):\n"
-            << "  mode    exact [Hz]  from nominal";
-      for (const Row *row : shown)
-        table << std::setw(14)
-              << (row->method + " " + std::to_string(row->order))
-              << "   rel. err      MAC     ";
-      table << "\n";
-      const std::vector<double> exact_f = exact.frequencies();
-      // Which nominal mode each exact mode comes from (by MAC): a '*' marks
-      // modes that changed places, i.e. eigenvalues that crossed.
-      const ModeComparison from_nominal =
-        compare_modes(std::vector<double>(exact.eigenvalues.begin(),
-                                          exact.eigenvalues.begin() + n_modes),
-                      std::vector<Vector<double>>(exact.modes.begin(),
-                                                  exact.modes.begin() +
-                                                    n_modes),
-                      all_nominal,
-                      M);
-      std::vector<unsigned int> nominal_of_exact;
-      for (const unsigned int i : from_nominal.match)
-        nominal_of_exact.push_back(i + 1);
-      results["case_info"][c.name]["exact_from_nominal"][label] =
-        nominal_of_exact;
-      for (unsigned int j = 0; j < n_modes; ++j)
-      {
-        table << std::setw(6) << j + 1 << std::setw(14) << fixed(exact_f[j], 3)
-              << std::setw(11) << from_nominal.match[j] + 1
-              << (from_nominal.match[j] != j ? " *" : "  ") << " ";
+        // Per mode, each method at its selected order.
+        std::vector<const Row *> shown;
+        for (const Row &row : rows)
+          if (row.selected)
+            shown.push_back(&row);
+        table << "  per mode, each method at the order above (error = |f - "
+                 "f_exact| / f_exact; exact mode paired by MAC):\n"
+              << "  mode    exact [Hz]  from nominal";
         for (const Row *row : shown)
-        {
-          const unsigned int i = row->comparison.match[j];
-          table << std::setw(14) << fixed(row->result.frequencies()[j], 3)
-                << std::setw(10)
-                << scientific(row->comparison.relative_error[j])
-                << std::setw(14) << fixed(row->comparison.mac[j], 8)
-                << (i != j ? "(" + std::to_string(i + 1) + ")" : "   ");
-        }
+          table << std::setw(14)
+                << (row->method + " " + std::to_string(row->order))
+                << "   rel. err      MAC     ";
         table << "\n";
+        const std::vector<double> exact_f = exact.frequencies();
+        // Which nominal mode each exact mode comes from (by MAC): a '*' marks
+        // modes that changed places, i.e. eigenvalues that crossed.
+        const ModeComparison from_nominal = compare_modes(
+          std::vector<double>(exact.eigenvalues.begin(),
+                              exact.eigenvalues.begin() + n_modes),
+          std::vector<Vector<double>>(exact.modes.begin(),
+                                      exact.modes.begin() + n_modes),
+          all_nominal,
+          M);
+        std::vector<unsigned int> nominal_of_exact;
+        for (const unsigned int i : from_nominal.match)
+          nominal_of_exact.push_back(i + 1);
+        results["case_info"][c.name]["exact_from_nominal"][label] =
+          nominal_of_exact;
+        for (unsigned int j = 0; j < n_modes; ++j)
+          {
+            table << std::setw(6) << j + 1 << std::setw(14)
+                  << fixed(exact_f[j], 3) << std::setw(11)
+                  << from_nominal.match[j] + 1
+                  << (from_nominal.match[j] != j ? " *" : "  ") << " ";
+            for (const Row *row : shown)
+              {
+                const unsigned int i = row->comparison.match[j];
+                table << std::setw(14) << fixed(row->result.frequencies()[j], 3)
+                      << std::setw(10)
+                      << scientific(row->comparison.relative_error[j])
+                      << std::setw(14) << fixed(row->comparison.mac[j], 8)
+                      << (i != j ? "(" + std::to_string(i + 1) + ")" : "   ");
+              }
+            table << "\n";
+          }
+        say(table.str());
       }
-      say(table.str());
-    }
   }
 
 
@@ -827,8 +837,7 @@ main(int argc, char **argv)
   return FuzzyContact::run_program(argc,
                                    argv,
                                    "step-2",
-                                   [](const std::string &parameter_file)
-                                   {
+                                   [](const std::string &parameter_file) {
                                      Step2::ModalReanalysis reanalysis(
                                        parameter_file);
                                      reanalysis.run();

@@ -283,19 +283,19 @@ namespace Step3
     Input::parse_strictly(prm, parameter_file);
     parameters.parse_parameters(prm, parameter_file);
     for (const std::string &file : parameters.scene_files)
-    {
-      scenes.push_back(Scene::read(file));
-      AssertThrow(!scenes.back().contact_pairs.empty(),
-                  ExcMessage("Scene " + file + " has no contact pairs."));
-    }
+      {
+        scenes.push_back(Scene::read(file));
+        AssertThrow(!scenes.back().contact_pairs.empty(),
+                    ExcMessage("Scene " + file + " has no contact pairs."));
+      }
     if (!parameters.paper_scene_file.empty())
-    {
-      with_paper              = true;
-      paper_scene             = Scene::read(parameters.paper_scene_file);
-      paper_scene.plane_model = PlaneModel::plane_strain;
-      AssertThrow(!paper_scene.contact_pairs.empty(),
-                  ExcMessage("The paper scene has no contact pairs."));
-    }
+      {
+        with_paper              = true;
+        paper_scene             = Scene::read(parameters.paper_scene_file);
+        paper_scene.plane_model = PlaneModel::plane_strain;
+        AssertThrow(!paper_scene.contact_pairs.empty(),
+                    ExcMessage("The paper scene has no contact pairs."));
+      }
     output = OutputFiles(parameters.output_directory);
   }
 
@@ -320,14 +320,14 @@ namespace Step3
     std::vector<std::unique_ptr<Component>> owned;
     std::vector<const Component *>          components;
     for (const ComponentDescription &d : scene.components)
-    {
-      TimerOutput::Scope scope(timer, "assembly");
-      owned.push_back(std::make_unique<Component>(d,
-                                                  scene.plane_model,
-                                                  parameters.mesh_refinements,
-                                                  &local));
-      components.push_back(owned.back().get());
-    }
+      {
+        TimerOutput::Scope scope(timer, "assembly");
+        owned.push_back(std::make_unique<Component>(d,
+                                                    scene.plane_model,
+                                                    parameters.mesh_refinements,
+                                                    &local));
+        components.push_back(owned.back().get());
+      }
     ContactInterface interface(scene,
                                components,
                                parameters.penetration_tolerance);
@@ -358,71 +358,71 @@ namespace Step3
     const ModalSolver       modal_solver(parameters.modal);
     std::vector<ModalBasis> bases;
     for (const Component *component : components)
-    {
-      TimerOutput::Scope scope(timer, "modes (ARPACK)");
-      local.enter_subsection("modes");
-      bases.push_back(modal_solver.solve(component->stiffness_matrix(),
-                                         component->mass_matrix(),
-                                         "Component " + component->name()));
-      local.leave_subsection();
-    }
+      {
+        TimerOutput::Scope scope(timer, "modes (ARPACK)");
+        local.enter_subsection("modes");
+        bases.push_back(modal_solver.solve(component->stiffness_matrix(),
+                                           component->mass_matrix(),
+                                           "Component " + component->name()));
+        local.leave_subsection();
+      }
     if (parameters.mode_error_tolerance > 0)
       for (unsigned int c = 0; c < components.size(); ++c)
-      {
-        // The component's part of the report node's normal flexibility.
-        Vector<double> f(components[c]->n_dofs());
-        for (auto it = interface.gap_operator(c).begin(normal_row(slave));
-             it != interface.gap_operator(c).end(normal_row(slave));
-             ++it)
-          f[it->column()] = it->value();
-        if (f.linfty_norm() == 0)
-          continue;
-        SparseDirectUMFPACK inverse;
-        inverse.initialize(components[c]->stiffness_matrix());
-        Vector<double> u = f;
-        inverse.solve(u);
-        const unsigned int n =
-          modes_for_static_error(bases[c],
-                                 f,
-                                 u,
-                                 parameters.mode_error_tolerance,
-                                 "Component " + components[c]->name());
-        bases[c].eigenvalues.resize(n);
-        bases[c].modes.resize(n);
-        bases[c].residuals.resize(n);
-      }
+        {
+          // The component's part of the report node's normal flexibility.
+          Vector<double> f(components[c]->n_dofs());
+          for (auto it = interface.gap_operator(c).begin(normal_row(slave));
+               it != interface.gap_operator(c).end(normal_row(slave));
+               ++it)
+            f[it->column()] = it->value();
+          if (f.linfty_norm() == 0)
+            continue;
+          SparseDirectUMFPACK inverse;
+          inverse.initialize(components[c]->stiffness_matrix());
+          Vector<double> u = f;
+          inverse.solve(u);
+          const unsigned int n =
+            modes_for_static_error(bases[c],
+                                   f,
+                                   u,
+                                   parameters.mode_error_tolerance,
+                                   "Component " + components[c]->name());
+          bases[c].eigenvalues.resize(n);
+          bases[c].modes.resize(n);
+          bases[c].residuals.resize(n);
+        }
 
     std::vector<std::unique_ptr<ReducedComponent>> reduced[2];
     std::unique_ptr<ReducedContactModel>           models[2];
     for (const bool corrected : {false, true})
-    {
-      std::vector<ReducedComponentMatrices> matrices;
-      for (unsigned int c = 0; c < components.size(); ++c)
       {
-        TimerOutput::Scope scope(timer,
-                                 corrected ? "static correction modes"
-                                           : "reduced matrices");
-        local.enter_subsection(corrected ? "static correction"
-                                         : "modal reduction");
-        reduced[corrected].push_back(
-          std::make_unique<ReducedComponent>(*components[c],
-                                             bases[c],
-                                             interface.contact_dofs(c),
-                                             corrected,
-                                             parameters.rank_tolerance));
-        matrices.push_back(
-          reduced[corrected].back()->matrices(interface.gap_operator(c),
-                                              observed[c]));
+        std::vector<ReducedComponentMatrices> matrices;
+        for (unsigned int c = 0; c < components.size(); ++c)
+          {
+            TimerOutput::Scope scope(timer,
+                                     corrected ? "static correction modes"
+                                               : "reduced matrices");
+            local.enter_subsection(corrected ? "static correction"
+                                             : "modal reduction");
+            reduced[corrected].push_back(
+              std::make_unique<ReducedComponent>(*components[c],
+                                                 bases[c],
+                                                 interface.contact_dofs(c),
+                                                 corrected,
+                                                 parameters.rank_tolerance));
+            matrices.push_back(
+              reduced[corrected].back()->matrices(interface.gap_operator(c),
+                                                  observed[c]));
+            local.leave_subsection();
+          }
+        TimerOutput::Scope scope(timer, "reduced contact flexibility W");
+        local.enter_subsection(corrected ? "W (corrected)" : "W (modes)");
+        models[corrected] = std::make_unique<ReducedContactModel>(
+          std::move(matrices),
+          interface.initial_gaps(),
+          interface.friction_coefficients());
         local.leave_subsection();
       }
-      TimerOutput::Scope scope(timer, "reduced contact flexibility W");
-      local.enter_subsection(corrected ? "W (corrected)" : "W (modes)");
-      models[corrected] = std::make_unique<ReducedContactModel>(
-        std::move(matrices),
-        interface.initial_gaps(),
-        interface.friction_coefficients());
-      local.leave_subsection();
-    }
 
     {
       std::ostringstream out;
@@ -446,123 +446,123 @@ namespace Step3
       offline["plane_model"] = to_string(scene.plane_model);
       offline["times_s"]     = t;
       for (unsigned int c = 0; c < components.size(); ++c)
-      {
-        offline["components"].push_back(
-          {{"name", components[c]->name()},
-           {"n_dofs", components[c]->n_dofs()},
-           {"n_modes", bases[c].size()},
-           {"highest_frequency_hz", bases[c].frequencies().back()},
-           {"n_correction_modes", reduced[1][c]->n_corrections()}});
-      }
+        {
+          offline["components"].push_back(
+            {{"name", components[c]->name()},
+             {"n_dofs", components[c]->n_dofs()},
+             {"n_modes", bases[c].size()},
+             {"highest_frequency_hz", bases[c].frequencies().back()},
+             {"n_correction_modes", reduced[1][c]->n_corrections()}});
+        }
       results["offline"].push_back(offline);
     }
 
     // The solvers, for every friction coefficient.
     std::vector<CaseResult> cases;
     for (const double mu : friction_coefficients)
-    {
-      interface.set_friction_coefficient(mu);
-      for (auto &model : models)
-        model->problem().set_friction_coefficient(mu);
-
-      CaseResult c;
-      c.scene       = scene.name;
-      c.plane_model = scene.plane_model;
-      c.load        = parameters.load;
-      c.mu          = mu;
-      for (const Component *component : components)
-        c.n_dofs.push_back(component->n_dofs());
-      c.n_nodes = interface.n_nodes();
-
       {
-        // A fresh full-order solver: its time is that of a cold solve
-        // (factorisations included); a second solve shows the warm cost.
-        TimerOutput::Scope scope(timer, "full_order");
-        FullOrderContact   full(components, interface, parameters.exact);
-        full.set_load_factor(load_factor);
-        full.set_n_load_steps(parameters.n_load_steps);
-        SolverRun run;
-        run.solution           = full.solve(&report);
-        run.fields             = run.solution.displacements;
-        c.full_order_warm_time = full.solve(&report).time;
-        c.runs.push_back(std::move(run));
-      }
+        interface.set_friction_coefficient(mu);
+        for (auto &model : models)
+          model->problem().set_friction_coefficient(mu);
 
-      const auto reduced_run =
-        [&](const bool corrected, const bool fuzzy, const std::string &name)
-      {
-        TimerOutput::Scope         scope(timer, name);
-        const ReducedContactModel &model = *models[corrected];
-        Timer                      clock;
-        const ContactState         state = fuzzy ? FL2CSolver(parameters.fl2c)
-                                             .solve(model.problem(),
-                                                    load_factor,
-                                                    parameters.n_load_steps,
-                                                    name)
-                                                 : ActiveSetSolver(parameters.exact)
-                                             .solve(model.problem(),
-                                                    load_factor,
-                                                    parameters.n_load_steps,
-                                                    name);
-        SolverRun                  run;
-        run.solution      = model.solution(state, load_factor, &report, name);
-        run.solution.time = clock.wall_time();
-        run.solution.n_load_steps = parameters.n_load_steps;
-        if (parameters.write_vtu)
+        CaseResult c;
+        c.scene       = scene.name;
+        c.plane_model = scene.plane_model;
+        c.load        = parameters.load;
+        c.mu          = mu;
+        for (const Component *component : components)
+          c.n_dofs.push_back(component->n_dofs());
+        c.n_nodes = interface.n_nodes();
+
         {
-          const std::vector<Vector<double>> q =
-            model.coordinates(state.p, load_factor);
-          for (unsigned int i = 0; i < components.size(); ++i)
+          // A fresh full-order solver: its time is that of a cold solve
+          // (factorisations included); a second solve shows the warm cost.
+          TimerOutput::Scope scope(timer, "full_order");
+          FullOrderContact   full(components, interface, parameters.exact);
+          full.set_load_factor(load_factor);
+          full.set_n_load_steps(parameters.n_load_steps);
+          SolverRun run;
+          run.solution           = full.solve(&report);
+          run.fields             = run.solution.displacements;
+          c.full_order_warm_time = full.solve(&report).time;
+          c.runs.push_back(std::move(run));
+        }
+
+        const auto reduced_run =
+          [&](const bool corrected, const bool fuzzy, const std::string &name) {
+            TimerOutput::Scope         scope(timer, name);
+            const ReducedContactModel &model = *models[corrected];
+            Timer                      clock;
+            const ContactState state = fuzzy ? FL2CSolver(parameters.fl2c)
+                                                 .solve(model.problem(),
+                                                        load_factor,
+                                                        parameters.n_load_steps,
+                                                        name)
+                                             : ActiveSetSolver(parameters.exact)
+                                                 .solve(model.problem(),
+                                                        load_factor,
+                                                        parameters.n_load_steps,
+                                                        name);
+            SolverRun          run;
+            run.solution = model.solution(state, load_factor, &report, name);
+            run.solution.time         = clock.wall_time();
+            run.solution.n_load_steps = parameters.n_load_steps;
+            if (parameters.write_vtu)
+              {
+                const std::vector<Vector<double>> q =
+                  model.coordinates(state.p, load_factor);
+                for (unsigned int i = 0; i < components.size(); ++i)
+                  {
+                    Vector<double> u;
+                    reduced[corrected][i]->expand(q[i], u);
+                    run.fields.push_back(std::move(u));
+                  }
+              }
+            return run;
+          };
+        c.runs.push_back(reduced_run(true, false, "reduced_exact"));
+        c.runs.push_back(reduced_run(false, true, "fl2c_modes"));
+        c.runs.push_back(reduced_run(true, true, "fl2c_corrected"));
+        c.runs.push_back(reduced_run(false, false, "reduced_exact_modes"));
+
+        // Beam theory beside the full-order answer.
+        std::ostringstream theory;
+        if (scene.components.size() == 2)
           {
-            Vector<double> u;
-            reduced[corrected][i]->expand(q[i], u);
-            run.fields.push_back(std::move(u));
+            const auto beam =
+              BeamTheory::Beam::of(scene.components[0], scene.plane_model);
+            const double F = parameters.load;
+            const double EI =
+              beam.effective_modulus() * beam.second_moment_of_area();
+            const double L = beam.length;
+            if (scene.name == "stacked")
+              theory << "Euler-Bernoulli tip deflection: load shared equally "
+                        "(mu = 0) F L^3 / (3 E' 2I) = "
+                     << sci(F * L * L * L / (3 * EI * 2))
+                     << " m, composite beam (full stick) F L^3 / (3 E' 8I) = "
+                     << sci(F * L * L * L / (3 * EI * 8))
+                     << " m; full_order slave uy = "
+                     << sci(c.runs[0].solution.slave_displacement[1]) << " m";
+            else if (scene.name == "overlap")
+              {
+                const double a = scene.components[1].upper_right[0] -
+                                 scene.components[0].upper_right[0];
+                theory
+                  << "Euler-Bernoulli with contact at P1's tip only: N = F "
+                     "L^3 / (L^3 + a^3) = "
+                  << std::fixed << std::setprecision(0)
+                  << F * L * L * L / (L * L * L + a * a * a)
+                  << " N (L = " << std::setprecision(3) << L << " m, a = " << a
+                  << " m); full_order F_n = " << std::setprecision(0)
+                  << c.runs[0].solution.normal_force << " N";
+              }
           }
-        }
-        return run;
-      };
-      c.runs.push_back(reduced_run(true, false, "reduced_exact"));
-      c.runs.push_back(reduced_run(false, true, "fl2c_modes"));
-      c.runs.push_back(reduced_run(true, true, "fl2c_corrected"));
-      c.runs.push_back(reduced_run(false, false, "reduced_exact_modes"));
+        c.beam_theory = theory.str();
 
-      // Beam theory beside the full-order answer.
-      std::ostringstream theory;
-      if (scene.components.size() == 2)
-      {
-        const auto beam =
-          BeamTheory::Beam::of(scene.components[0], scene.plane_model);
-        const double F = parameters.load;
-        const double EI =
-          beam.effective_modulus() * beam.second_moment_of_area();
-        const double L = beam.length;
-        if (scene.name == "stacked")
-          theory << "Euler-Bernoulli tip deflection: load shared equally "
-                    "(mu = 0) F L^3 / (3 E' 2I) = "
-                 << sci(F * L * L * L / (3 * EI * 2))
-                 << " m, composite beam (full stick) F L^3 / (3 E' 8I) = "
-                 << sci(F * L * L * L / (3 * EI * 8))
-                 << " m; full_order slave uy = "
-                 << sci(c.runs[0].solution.slave_displacement[1]) << " m";
-        else if (scene.name == "overlap")
-        {
-          const double a = scene.components[1].upper_right[0] -
-                           scene.components[0].upper_right[0];
-          theory << "Euler-Bernoulli with contact at P1's tip only: N = F "
-                    "L^3 / (L^3 + a^3) = "
-                 << std::fixed << std::setprecision(0)
-                 << F * L * L * L / (L * L * L + a * a * a)
-                 << " N (L = " << std::setprecision(3) << L << " m, a = " << a
-                 << " m); full_order F_n = " << std::setprecision(0)
-                 << c.runs[0].solution.normal_force << " N";
-        }
+        if (parameters.write_vtu)
+          add_vtu(c, components, interface, label);
+        cases.push_back(std::move(c));
       }
-      c.beam_theory = theory.str();
-
-      if (parameters.write_vtu)
-        add_vtu(c, components, interface, label);
-      cases.push_back(std::move(c));
-    }
     return cases;
   }
 
@@ -581,31 +581,32 @@ namespace Step3
            " err F_n   err u_s  err ux   it   residual   time [s]  "
            "speed-up\n";
     for (const SolverRun &run : c.runs)
-    {
-      const ContactSolution &s = run.solution;
-      out << " " << std::left << std::setw(20) << s.solver << std::right;
-      for (const double v : {s.slave_displacement[0],
-                             s.slave_displacement[1],
-                             s.master_displacements[0][0],
-                             s.master_displacements[0][1],
-                             s.master_displacements[1][0],
-                             s.master_displacements[1][1]})
-        out << std::setw(13) << sci(v);
-      out << std::setw(13) << sci(s.normal_force, 5) << std::setw(13)
-          << sci(s.tangential_force, 4);
-      out << std::setw(10)
-          << sci(relative_error(s.normal_force, ref.normal_force), 1)
-          << std::setw(10)
-          << sci(relative_error(s.slave_displacement, ref.slave_displacement),
-                 1)
-          << std::setw(9)
-          << sci(relative_error(s.slave_displacement[0],
-                                ref.slave_displacement[0]),
-                 1)
-          << std::setw(5) << s.iterations << std::setw(11) << sci(s.residual, 1)
-          << std::setw(11) << sci(s.time, 2) << std::setw(9) << std::fixed
-          << std::setprecision(0) << ref.time / std::max(s.time, 1e-9) << "\n";
-    }
+      {
+        const ContactSolution &s = run.solution;
+        out << " " << std::left << std::setw(20) << s.solver << std::right;
+        for (const double v : {s.slave_displacement[0],
+                               s.slave_displacement[1],
+                               s.master_displacements[0][0],
+                               s.master_displacements[0][1],
+                               s.master_displacements[1][0],
+                               s.master_displacements[1][1]})
+          out << std::setw(13) << sci(v);
+        out << std::setw(13) << sci(s.normal_force, 5) << std::setw(13)
+            << sci(s.tangential_force, 4);
+        out << std::setw(10)
+            << sci(relative_error(s.normal_force, ref.normal_force), 1)
+            << std::setw(10)
+            << sci(relative_error(s.slave_displacement, ref.slave_displacement),
+                   1)
+            << std::setw(9)
+            << sci(relative_error(s.slave_displacement[0],
+                                  ref.slave_displacement[0]),
+                   1)
+            << std::setw(5) << s.iterations << std::setw(11)
+            << sci(s.residual, 1) << std::setw(11) << sci(s.time, 2)
+            << std::setw(9) << std::fixed << std::setprecision(0)
+            << ref.time / std::max(s.time, 1e-9) << "\n";
+      }
     out << " closed nodes (full_order): "
         << ref.n_nodes() - ref.count(ContactStatus::open) << " ("
         << ref.count(ContactStatus::stick) << " stick, "
@@ -635,28 +636,29 @@ namespace Step3
     j["full_order_warm_time_s"] = c.full_order_warm_time;
     j["solvers"]                = nlohmann::json::array();
     for (const SolverRun &run : c.runs)
-    {
-      const ContactSolution &s = run.solution;
-      nlohmann::json         e;
-      e["name"]                 = s.solver;
-      e["Fn"]                   = s.normal_force;
-      e["Ft"]                   = s.tangential_force;
-      e["slave_ux"]             = s.slave_displacement[0];
-      e["slave_uy"]             = s.slave_displacement[1];
-      e["iterations"]           = s.iterations;
-      e["time_s"]               = s.time;
-      e["master_displacements"] = s.master_displacements;
-      e["residual"]             = s.residual;
-      e["closed_nodes"]         = s.n_nodes() - s.count(ContactStatus::open);
-      e["Fn_error"] = relative_error(s.normal_force, ref.normal_force);
-      e["Ft_error"] = relative_error(s.tangential_force, ref.tangential_force);
-      e["slave_error"] =
-        relative_error(s.slave_displacement, ref.slave_displacement);
-      if (s.solver == "reduced_exact_modes")
-        j["reduced_exact_modes"] = e;
-      else
-        j["solvers"].push_back(e);
-    }
+      {
+        const ContactSolution &s = run.solution;
+        nlohmann::json         e;
+        e["name"]                 = s.solver;
+        e["Fn"]                   = s.normal_force;
+        e["Ft"]                   = s.tangential_force;
+        e["slave_ux"]             = s.slave_displacement[0];
+        e["slave_uy"]             = s.slave_displacement[1];
+        e["iterations"]           = s.iterations;
+        e["time_s"]               = s.time;
+        e["master_displacements"] = s.master_displacements;
+        e["residual"]             = s.residual;
+        e["closed_nodes"]         = s.n_nodes() - s.count(ContactStatus::open);
+        e["Fn_error"] = relative_error(s.normal_force, ref.normal_force);
+        e["Ft_error"] =
+          relative_error(s.tangential_force, ref.tangential_force);
+        e["slave_error"] =
+          relative_error(s.slave_displacement, ref.slave_displacement);
+        if (s.solver == "reduced_exact_modes")
+          j["reduced_exact_modes"] = e;
+        else
+          j["solvers"].push_back(e);
+      }
     return j;
   }
 
@@ -671,52 +673,52 @@ namespace Step3
     const Vector<double>             &p      = c.runs[0].solution.p;
     const std::vector<Vector<double>> forces = interface.nodal_forces(p);
     for (unsigned int i = 0; i < components.size(); ++i)
-    {
-      const Component &component = *components[i];
-      // Contact pressure and shear traction at the slave nodes, as the
-      // two scalar fields of one DoF vector (x slot: pressure, y slot:
-      // shear).
-      Vector<double> traction(component.n_dofs());
-      for (unsigned int k = 0; k < interface.n_nodes(); ++k)
       {
-        const ContactNode &node = interface.node(k);
-        if (node.slave.component != i)
-          continue;
-        const double area =
-          node.tributary_length * component.description().thickness;
-        traction[node.slave.dofs[0]] = p[normal_row(k)] / area;
-        traction[node.slave.dofs[1]] = p[tangential_row(k)] / area;
+        const Component &component = *components[i];
+        // Contact pressure and shear traction at the slave nodes, as the
+        // two scalar fields of one DoF vector (x slot: pressure, y slot:
+        // shear).
+        Vector<double> traction(component.n_dofs());
+        for (unsigned int k = 0; k < interface.n_nodes(); ++k)
+          {
+            const ContactNode &node = interface.node(k);
+            if (node.slave.component != i)
+              continue;
+            const double area =
+              node.tributary_length * component.description().thickness;
+            traction[node.slave.dofs[0]] = p[normal_row(k)] / area;
+            traction[node.slave.dofs[1]] = p[tangential_row(k)] / area;
+          }
+        DataOut<2> data_out;
+        data_out.attach_dof_handler(component.dof_handler());
+        const std::vector<
+          DataComponentInterpretation::DataComponentInterpretation>
+          vector(2, DataComponentInterpretation::component_is_part_of_vector),
+          scalars(2, DataComponentInterpretation::component_is_scalar);
+        for (const SolverRun &run : c.runs)
+          if (run.fields.size() == components.size())
+            data_out.add_data_vector(
+              run.fields[i],
+              std::vector<std::string>(2, "u_" + run.solution.solver),
+              DataOut<2>::type_dof_data,
+              vector);
+        data_out.add_data_vector(forces[i],
+                                 std::vector<std::string>(2, "contact_force"),
+                                 DataOut<2>::type_dof_data,
+                                 vector);
+        data_out.add_data_vector(traction,
+                                 std::vector<std::string>{"contact_pressure",
+                                                          "contact_shear"},
+                                 DataOut<2>::type_dof_data,
+                                 scalars);
+        data_out.build_patches(component.fe().degree);
+        std::ostringstream vtu;
+        data_out.write_vtu(vtu);
+        std::ostringstream name;
+        name << "contact-" << label << "-mu" << c.mu << "-" << component.name()
+             << ".vtu";
+        output.add(name.str(), vtu.str());
       }
-      DataOut<2> data_out;
-      data_out.attach_dof_handler(component.dof_handler());
-      const std::vector<
-        DataComponentInterpretation::DataComponentInterpretation>
-        vector(2, DataComponentInterpretation::component_is_part_of_vector),
-        scalars(2, DataComponentInterpretation::component_is_scalar);
-      for (const SolverRun &run : c.runs)
-        if (run.fields.size() == components.size())
-          data_out.add_data_vector(
-            run.fields[i],
-            std::vector<std::string>(2, "u_" + run.solution.solver),
-            DataOut<2>::type_dof_data,
-            vector);
-      data_out.add_data_vector(forces[i],
-                               std::vector<std::string>(2, "contact_force"),
-                               DataOut<2>::type_dof_data,
-                               vector);
-      data_out.add_data_vector(traction,
-                               std::vector<std::string>{"contact_pressure",
-                                                        "contact_shear"},
-                               DataOut<2>::type_dof_data,
-                               scalars);
-      data_out.build_patches(component.fe().degree);
-      std::ostringstream vtu;
-      data_out.write_vtu(vtu);
-      std::ostringstream name;
-      name << "contact-" << label << "-mu" << c.mu << "-" << component.name()
-           << ".vtu";
-      output.add(name.str(), vtu.str());
-    }
   }
 
 
@@ -743,22 +745,22 @@ namespace Step3
     std::vector<Column> columns = {abaqus, paper_fl2c};
     for (const CaseResult &c : cases)
       for (const SolverRun &run : c.runs)
-      {
-        const ContactSolution &s = run.solution;
-        if (s.solver != "full_order" && s.solver != "fl2c_modes" &&
-            s.solver != "fl2c_corrected")
-          continue;
-        std::ostringstream name;
-        name << s.solver << " mu=" << c.mu;
-        columns.push_back({name.str(),
-                           {{s.slave_displacement[0],
-                             s.slave_displacement[1],
-                             s.master_displacements[0][0],
-                             s.master_displacements[0][1],
-                             s.master_displacements[1][0],
-                             s.master_displacements[1][1],
-                             s.normal_force}}});
-      }
+        {
+          const ContactSolution &s = run.solution;
+          if (s.solver != "full_order" && s.solver != "fl2c_modes" &&
+              s.solver != "fl2c_corrected")
+            continue;
+          std::ostringstream name;
+          name << s.solver << " mu=" << c.mu;
+          columns.push_back({name.str(),
+                             {{s.slave_displacement[0],
+                               s.slave_displacement[1],
+                               s.master_displacements[0][0],
+                               s.master_displacements[0][1],
+                               s.master_displacements[1][0],
+                               s.master_displacements[1][1],
+                               s.normal_force}}});
+        }
     const std::array<std::string, 7> rows = {
       {"Ux slave", "Uy slave", "Ux m1", "Uy m1", "Ux m2", "Uy m2", "F_n [N]"}};
 
@@ -772,13 +774,13 @@ namespace Step3
           << col.name;
     out << "\n";
     for (unsigned int r = 0; r < rows.size(); ++r)
-    {
-      out << " " << std::left << std::setw(8) << rows[r] << std::right;
-      for (const Column &col : columns)
-        out << std::setw(col.name.size() > 15 ? col.name.size() + 2 : 17)
-            << (r < 6 ? sci(col.values[r], 3) : sci(col.values[r], 5));
-      out << "\n";
-    }
+      {
+        out << " " << std::left << std::setw(8) << rows[r] << std::right;
+        for (const Column &col : columns)
+          out << std::setw(col.name.size() > 15 ? col.name.size() + 2 : 17)
+              << (r < 6 ? sci(col.values[r], 3) : sci(col.values[r], 5));
+        out << "\n";
+      }
     out << " |ours| / |Abaqus| for full_order mu=" << cases[0].mu << ":";
     for (unsigned int r = 0; r < rows.size(); ++r)
       out << " " << rows[r] << " " << std::fixed << std::setprecision(3)
@@ -812,33 +814,33 @@ namespace Step3
         "exact, FL2C on modes, FL2C with static correction)\n");
     results["cases"] = nlohmann::json::array();
     for (const Scene &scene : scenes)
-    {
-      const std::vector<CaseResult> cases =
-        analyse(scene,
-                parameters.friction_coefficients,
-                scene.name + "-" +
-                  (scene.plane_model == PlaneModel::plane_stress ? "stress"
-                                                                 : "strain"));
-      for (const CaseResult &c : cases)
       {
-        print_case(c);
-        results["cases"].push_back(case_json(c));
+        const std::vector<CaseResult> cases =
+          analyse(scene,
+                  parameters.friction_coefficients,
+                  scene.name + "-" +
+                    (scene.plane_model == PlaneModel::plane_stress ? "stress"
+                                                                   : "strain"));
+        for (const CaseResult &c : cases)
+          {
+            print_case(c);
+            results["cases"].push_back(case_json(c));
+          }
       }
-    }
     if (with_paper)
-    {
-      // The paper does not say which friction coefficient it used:
-      // frictionless and the scene's own.
-      std::vector<double> mus = {0.};
-      const double mu = paper_scene.contact_pairs[0].friction_coefficient;
-      if (mu > 0)
-        mus.push_back(mu);
-      const std::vector<CaseResult> cases =
-        analyse(paper_scene, mus, paper_scene.name + "-strain");
-      for (const CaseResult &c : cases)
-        print_case(c);
-      compare_with_paper(cases);
-    }
+      {
+        // The paper does not say which friction coefficient it used:
+        // frictionless and the scene's own.
+        std::vector<double> mus = {0.};
+        const double mu = paper_scene.contact_pairs[0].friction_coefficient;
+        if (mu > 0)
+          mus.push_back(mu);
+        const std::vector<CaseResult> cases =
+          analyse(paper_scene, mus, paper_scene.name + "-strain");
+        for (const CaseResult &c : cases)
+          print_case(c);
+        compare_with_paper(cases);
+      }
 
     {
       TimerOutput::Scope scope(timer, "output");
@@ -860,8 +862,7 @@ main(int argc, char **argv)
   return FuzzyContact::run_program(argc,
                                    argv,
                                    "step-3",
-                                   [](const std::string &parameter_file)
-                                   {
+                                   [](const std::string &parameter_file) {
                                      Step3::ContactStudy study(parameter_file);
                                      study.run();
                                    });
