@@ -171,34 +171,52 @@ namespace FuzzyContact
         points.push_back(p);
     }
 
-    // The per-parameter grid of the Extension Principle.
+    // The samples of the Extension Principle: every level's box on a grid
+    // of @p r equally spaced values per parameter (both ends included), each
+    // distinct point once.
     std::vector<std::vector<double>>
-    sampling_grid(const std::vector<FuzzyNumber> &parameters,
-                  const std::vector<double>      &alpha,
-                  const unsigned int              extra)
+    sampling_points(const std::vector<FuzzyNumber> &parameters,
+                    const std::vector<double>      &alpha,
+                    const unsigned int              r)
     {
-      std::vector<std::vector<double>> grid;
-      for (const FuzzyNumber &p : parameters)
+      AssertThrow(r >= 2,
+                  ExcMessage("Extension principle: points per dimension must "
+                             "be at least 2 (the ends of every interval)."));
+      std::vector<std::vector<double>> points;
+      std::set<std::vector<double>>    seen;
+      const unsigned int               n = parameters.size();
+      for (const double a : alpha)
         {
-          std::set<double> ends;
-          for (const double a : alpha)
+          const std::vector<Interval> box = alpha_box(parameters, a);
+          // values per parameter: r of them, or one for a point interval
+          std::vector<std::vector<double>> values(n);
+          unsigned long                    count = 1;
+          for (unsigned int d = 0; d < n; ++d)
             {
-              const Interval cut = p.alpha_cut(a);
-              ends.insert(cut.lower);
-              ends.insert(cut.upper);
+              if (box[d].width() == 0)
+                values[d] = {box[d].lower};
+              else
+                for (unsigned int i = 0; i < r; ++i)
+                  values[d].push_back(i == 0 ? box[d].lower
+                                      : i == r - 1
+                                        ? box[d].upper
+                                        : box[d].lower +
+                                            box[d].width() * i / (r - 1.));
+              count *= values[d].size();
             }
-          std::vector<double> g;
-          for (auto it = ends.begin(); it != ends.end(); ++it)
+          for (unsigned long i = 0; i < count; ++i)
             {
-              g.push_back(*it);
-              const auto next = std::next(it);
-              if (next != ends.end())
-                for (unsigned int e = 1; e <= extra; ++e)
-                  g.push_back(*it + (*next - *it) * e / (extra + 1.));
+              std::vector<double> p(n);
+              unsigned long       rest = i;
+              for (unsigned int d = 0; d < n; ++d)
+                {
+                  p[d] = values[d][rest % values[d].size()];
+                  rest /= values[d].size();
+                }
+              add_unique(points, seen, p);
             }
-          grid.push_back(g);
         }
-      return grid;
+      return points;
     }
   } // namespace
 
@@ -239,12 +257,9 @@ namespace FuzzyContact
   unsigned long
   extension_principle_size(const std::vector<FuzzyNumber> &parameters,
                            const std::vector<double>      &alpha,
-                           const unsigned int              extra)
+                           const unsigned int              points_per_dimension)
   {
-    unsigned long n = 1;
-    for (const auto &g : sampling_grid(parameters, alpha, extra))
-      n *= g.size();
-    return n;
+    return sampling_points(parameters, alpha, points_per_dimension).size();
   }
 
 
@@ -253,27 +268,12 @@ namespace FuzzyContact
                       const std::vector<double>      &alpha,
                       const Response                 &response,
                       const unsigned int              n_outputs,
-                      const unsigned int              extra,
+                      const unsigned int              points_per_dimension,
                       const MPI_Comm                  comm)
   {
     Timer      timer;
-    const auto grid = sampling_grid(parameters, alpha, extra);
-    std::vector<std::vector<double>> points;
-    unsigned long                    total = 1;
-    for (const auto &g : grid)
-      total *= g.size();
-    points.reserve(total);
-    for (unsigned long i = 0; i < total; ++i)
-      {
-        std::vector<double> p(grid.size());
-        unsigned long       rest = i;
-        for (unsigned int d = 0; d < grid.size(); ++d)
-          {
-            p[d] = grid[d][rest % grid[d].size()];
-            rest /= grid[d].size();
-          }
-        points.push_back(std::move(p));
-      }
+    const auto points =
+      sampling_points(parameters, alpha, points_per_dimension);
     const auto        outputs = evaluate_distributed(points, response, comm);
     FuzzyOutputBounds result =
       bounds_over_points(parameters, alpha, points, outputs, n_outputs);

@@ -27,6 +27,12 @@ namespace FuzzyContact
   OptimisationSettings::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Optimisation");
+    prm.declare_entry("algorithm",
+                      "spectral gradient",
+                      Patterns::Selection("spectral gradient|quasi-newton"),
+                      "ROL's bound-constrained algorithm: projected spectral "
+                      "gradient (Barzilai-Borwein steps) or a projected "
+                      "quasi-Newton (L-BFGS) line search.");
     prm.declare_entry("gradient tolerance",
                       "1e-10",
                       Patterns::Double(),
@@ -41,7 +47,7 @@ namespace FuzzyContact
                       Patterns::Integer(),
                       "ROL iterations per output, bound and alpha level.");
     prm.declare_entry("finite difference step",
-                      "1e-5",
+                      "1e-4",
                       Patterns::Double(),
                       "Step of the finite-difference sensitivities, relative "
                       "to the width of each parameter's support.");
@@ -51,6 +57,14 @@ namespace FuzzyContact
                       "An optimum further than this (relative to the "
                       "alpha-cut width) from both ends of a parameter's "
                       "interval counts as interior.");
+    prm.declare_entry("response tolerance",
+                      "1e-7",
+                      Patterns::Double(),
+                      "Relative accuracy of the model's outputs (the FL2C "
+                      "tolerance makes them accurate to about that much): "
+                      "smaller differences are no evidence of a non-monotone "
+                      "response. Keep the finite difference step well above "
+                      "it.");
     prm.declare_entry("multi-start fallback",
                       "true",
                       Patterns::Bool(),
@@ -64,6 +78,7 @@ namespace FuzzyContact
   OptimisationSettings::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Optimisation");
+    algorithm          = prm.get("algorithm");
     gradient_tolerance = Input::positive(prm.get_double("gradient tolerance"),
                                          "Optimisation: gradient tolerance");
     step_tolerance     = Input::positive(prm.get_double("step tolerance"),
@@ -82,7 +97,13 @@ namespace FuzzyContact
                            "below 0.1 (it is relative to the support width)."));
     interior_tolerance = Input::positive(prm.get_double("interior tolerance"),
                                          "Optimisation: interior tolerance");
-    fallback           = prm.get_bool("multi-start fallback");
+    response_tolerance = Input::positive(prm.get_double("response tolerance"),
+                                         "Optimisation: response tolerance");
+    AssertThrow(finite_difference_step > 10 * response_tolerance,
+                ExcMessage("Optimisation: the finite difference step must be "
+                           "well above the response tolerance (10 times at "
+                           "least), or the sensitivities are noise."));
+    fallback = prm.get_bool("multi-start fallback");
     prm.leave_subsection();
   }
 
@@ -261,6 +282,8 @@ namespace FuzzyContact
       double     value; // of the scaled, signed objective
       VectorType gradient;
       int        iterations;
+      // ROL's exit: false if it stopped at its iteration limit.
+      bool converged = true;
     };
 
     LocalOptimum
@@ -296,11 +319,16 @@ namespace FuzzyContact
           list.sublist("General").set("Output Level", 0);
           list.sublist("General").sublist("Secant").set("Type",
                                                         "Limited-Memory BFGS");
-          list.sublist("Step").set("Type", "Line Search");
-          list.sublist("Step")
-            .sublist("Line Search")
-            .sublist("Descent Method")
-            .set("Type", "Quasi-Newton Method");
+          if (settings.algorithm == "quasi-newton")
+            {
+              list.sublist("Step").set("Type", "Line Search");
+              list.sublist("Step")
+                .sublist("Line Search")
+                .sublist("Descent Method")
+                .set("Type", "Quasi-Newton Method");
+            }
+          else
+            list.sublist("Step").set("Type", "Spectral Gradient");
           list.sublist("Status Test")
             .set("Gradient Tolerance", settings.gradient_tolerance);
           list.sublist("Status Test")
@@ -311,6 +339,8 @@ namespace FuzzyContact
           std::ostringstream  quiet;
           solver.solve(quiet);
           optimum.iterations = solver.getAlgorithmState()->iter;
+          optimum.converged =
+            solver.getAlgorithmState()->statusFlag != ROL::EXITSTATUS_MAXITER;
         }
       else
         optimum.iterations = 0;
@@ -424,12 +454,19 @@ namespace FuzzyContact
 
             // Is the response monotone here? An interior optimum, or a
             // vertex better than the local optimum, says it is not.
-            // A coordinate strictly inside its interval is an interior
-            // optimum only if both ends of the interval are worse; if one
-            // end is as good, the response is flat in that parameter (it
-            // does not depend on it there) and the optimum moves to that end.
+            // A coordinate strictly inside its interval, compared with the two
+            // ends of the interval (the other coordinates kept):
+            //  - both ends worse: an interior optimum (non-monotone response);
+            //  - both ends better: an interior stationary point that is no
+            //    optimum (non-monotone response); move to the better end;
+            //  - one end better: the optimiser stopped short in a monotone
+            //    direction; move there and say so;
+            //  - an end as good: the response is flat in that parameter (it
+            //    does not depend on it there); move there.
             std::vector<std::string> findings;
-            const double noise = 1e-12 * std::max(1., std::abs(best.value));
+            const double             noise =
+              settings.response_tolerance * std::max(1., std::abs(best.value));
+            bool moved = false;
             for (unsigned int i = 0; i < n; ++i)
               {
                 const double width = hi[i] - lo[i];
@@ -438,23 +475,33 @@ namespace FuzzyContact
                 const double tol = settings.interior_tolerance * width;
                 if (best.x[i] <= lo[i] + tol || best.x[i] >= hi[i] - tol)
                   continue;
-                VectorType at_end = best.x;
-                at_end[i]         = lo[i];
-                const double f_lo = objective.at(at_end);
-                at_end[i]         = hi[i];
-                const double f_hi = objective.at(at_end);
-                if (std::min(f_lo, f_hi) <= best.value + noise)
+                VectorType at_end      = best.x;
+                at_end[i]              = lo[i];
+                const double f_lo      = objective.at(at_end);
+                at_end[i]              = hi[i];
+                const double      f_hi = objective.at(at_end);
+                const std::string where =
+                  "parameter " + std::to_string(normalisation.free[i] + 1) +
+                  " (at " +
+                  format(
+                    normalisation.parameters(best.x)[normalisation.free[i]]) +
+                  ")";
+                const bool lo_better = f_lo < best.value - noise;
+                const bool hi_better = f_hi < best.value - noise;
+                if (std::min(f_lo, f_hi) > best.value + noise)
                   {
-                    best.x[i]  = f_lo <= f_hi ? lo[i] : hi[i];
-                    best.value = std::min(best.value, std::min(f_lo, f_hi));
+                    findings.push_back("optimum inside the interval of " +
+                                       where);
                     continue;
                   }
-                findings.push_back("optimum inside the interval of parameter " +
-                                   std::to_string(normalisation.free[i] + 1) +
-                                   " (at " +
-                                   format(normalisation.parameters(
-                                     best.x)[normalisation.free[i]]) +
-                                   ")");
+                if (lo_better && hi_better)
+                  findings.push_back("a stationary point inside the interval "
+                                     "of " +
+                                     where + " that is no optimum");
+                else
+                  moved = moved || lo_better || hi_better;
+                best.x[i]  = f_lo <= f_hi ? lo[i] : hi[i];
+                best.value = std::min(best.value, std::min(f_lo, f_hi));
               }
             double best_vertex = std::numeric_limits<double>::infinity();
             if (n > 0 && n < 20)
@@ -465,7 +512,8 @@ namespace FuzzyContact
                     v[i] = (corner >> i) & 1 ? hi[i] : lo[i];
                   best_vertex = std::min(best_vertex, objective.at(v));
                 }
-            if (best_vertex < best.value - 1e-12 * std::abs(best.value))
+            if (best_vertex < best.value - settings.response_tolerance *
+                                             std::max(1., std::abs(best.value)))
               findings.push_back("a vertex of the box is better than the "
                                  "local optimum");
             gradients.push_back(best.gradient);
@@ -516,6 +564,14 @@ namespace FuzzyContact
                 result.notes.push_back(note);
               }
 
+            if (moved || !best.converged)
+              result.notes.push_back(
+                what + ", alpha = " + format(alpha[l]) +
+                ": the local optimiser stopped short of the optimum (" +
+                (best.converged ? "converged to its tolerances"
+                                : "at its iteration limit") +
+                "); the ends of the parameter intervals were better and the "
+                "optimum was moved there");
             result.value[l]    = sign * best.value * scale;
             result.argument[l] = normalisation.parameters(best.x);
             start              = best.x;
@@ -527,8 +583,12 @@ namespace FuzzyContact
             bool positive = false, negative = false;
             for (const VectorType &g : gradients)
               {
-                positive = positive || g[i] > 1e-8;
-                negative = negative || g[i] < -1e-8;
+                // A gradient below the noise of a finite difference of the
+                // response carries no sign.
+                const double noise = 10 * settings.response_tolerance /
+                                     settings.finite_difference_step;
+                positive = positive || g[i] > noise;
+                negative = negative || g[i] < -noise;
               }
             if (positive && negative)
               result.notes.push_back(

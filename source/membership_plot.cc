@@ -62,7 +62,7 @@ namespace FuzzyContact
            << "set multiplot layout " << rows << "," << columns << " title "
            << quoted(title) << "\n"
            << "set yrange [0:1.05]\nset ylabel \"membership\"\n"
-           << "set grid\nset key top left box opaque font \",9\"\n";
+           << "set grid\nset key bottom center box opaque font \",9\"\n";
     for (unsigned int p = 0; p < panels.size(); ++p)
       {
         script << "set title " << quoted(panels[p].title) << "\n"

@@ -15,10 +15,9 @@
 //    vertex of the box and its centre.
 //  - vertex_method(): the 2^n corners of each box. Exact for responses that
 //    are monotone in each parameter, wrong otherwise.
-//  - extension_principle(): the reference. Every box is sampled on one
-//    tensor grid made of all alpha-cut end points of every parameter (plus
-//    optional points in between), so each box's corners are samples and the
-//    results of the levels are nested.
+//  - extension_principle(): the reference. Every box is sampled on a
+//    tensor grid (its corners included), and each level takes the extremes
+//    over all samples inside its box, so the results are nested.
 //
 // The vertex and Extension Principle samples are spread over the ranks of an
 // MPI communicator; the optimisation chains (one per output and direction)
@@ -101,27 +100,36 @@ namespace FuzzyContact
                 const MPI_Comm                  comm = MPI_COMM_SELF);
 
   /**
-   * The Extension Principle by sampling: per parameter, the grid holds all
-   * alpha-cut end points of all levels with @p extra_points_per_interval
-   * equally spaced points inserted between neighbours; every box is
-   * evaluated on the grid points it contains.
+   * The Extension Principle by sampling: every level's box is sampled on a
+   * grid of @p points_per_dimension equally spaced values per parameter
+   * (both ends included, so the vertices are samples). The bounds of a level
+   * are taken over every sample inside its box, its own and those of the
+   * levels above it, so the results are nested.
    */
   FuzzyOutputBounds
   extension_principle(const std::vector<FuzzyNumber> &parameters,
                       const std::vector<double>      &alpha,
                       const Response                 &response,
                       const unsigned int              n_outputs,
-                      const unsigned int extra_points_per_interval = 0,
-                      const MPI_Comm     comm = MPI_COMM_SELF);
+                      const unsigned int              points_per_dimension,
+                      const MPI_Comm                  comm = MPI_COMM_SELF);
 
   /** Number of samples extension_principle() would evaluate. */
   unsigned long
   extension_principle_size(const std::vector<FuzzyNumber> &parameters,
                            const std::vector<double>      &alpha,
-                           const unsigned int extra_points_per_interval);
+                           const unsigned int points_per_dimension);
 
   struct OptimisationSettings
   {
+    /**
+     * ROL's algorithm for the bound-constrained problems: "spectral
+     * gradient" (projected gradient with Barzilai-Borwein steps, the
+     * default: the responses are nearly linear and badly scaled, and long
+     * spectral steps reach the vertices in a few iterations) or
+     * "quasi-newton" (projected L-BFGS line search).
+     */
+    std::string algorithm = "spectral gradient";
     /** ROL's tolerance on the projected gradient (scaled objective). */
     double gradient_tolerance = 1e-10;
     /** ROL's tolerance on the step (normalised parameters). */
@@ -132,12 +140,20 @@ namespace FuzzyContact
      * Finite-difference step for the sensitivities, relative to the width
      * of each parameter's support.
      */
-    double finite_difference_step = 1e-5;
+    double finite_difference_step = 1e-4;
     /**
      * A coordinate of an optimum counts as interior if it lies further than
      * this (relative to its alpha-cut width) from both ends.
      */
     double interior_tolerance = 1e-6;
+    /**
+     * Relative accuracy of the response (e.g. the tolerance of an iterative
+     * solver inside it): differences below it between an optimum and a
+     * vertex, or between an optimum and the ends of an interval, are not
+     * taken as evidence of a non-monotone response. The finite-difference
+     * step must be well above it.
+     */
+    double response_tolerance = 1e-12;
     /** Multi-start on detected non-monotonicity. */
     bool fallback = true;
 
