@@ -11,14 +11,14 @@ set(step3_coarse "-DEDIT2_FILE=step"
 
 fuzzycontact_program_test(step-3.default_run step-3 overlap
   -DEXPECT=success
-  -DEXTRA_SCENES=${CMAKE_SOURCE_DIR}/prm/stacked.prm
+  -DEXTRA_FILES=${CMAKE_SOURCE_DIR}/prm/stacked.prm
   ${step3_coarse}
   -DJSON_CHECKS=${CMAKE_CURRENT_SOURCE_DIR}/check_step-3.cmake)
 
 # A load of zero is no error: zero contact force, not NaN.
 fuzzycontact_program_test(step-3.zero_load step-3 overlap
   -DEXPECT=success
-  -DEXTRA_SCENES=${CMAKE_SOURCE_DIR}/prm/stacked.prm
+  -DEXTRA_FILES=${CMAKE_SOURCE_DIR}/prm/stacked.prm
   ${step3_coarse}
   -DEDIT_FILE=step
   "-DEDIT_FROM=set load                    = 50000"
@@ -44,7 +44,7 @@ foreach(case ${step3_bad_inputs})
   list(GET fields 4 message)
   fuzzycontact_program_test(step-3.bad_input.${name} step-3 overlap
     -DEXPECT=failure
-    -DEXTRA_SCENES=${CMAKE_SOURCE_DIR}/prm/stacked.prm
+    -DEXTRA_FILES=${CMAKE_SOURCE_DIR}/prm/stacked.prm
     -DEDIT_FILE=${file}
     "-DEDIT_FROM=${from}"
     "-DEDIT_TO=${to}"
@@ -56,7 +56,7 @@ endforeach()
 fuzzycontact_program_test(step-3.bad_input.regulator_does_not_converge
   step-3 overlap
   -DEXPECT=failure
-  -DEXTRA_SCENES=${CMAKE_SOURCE_DIR}/prm/stacked.prm
+  -DEXTRA_FILES=${CMAKE_SOURCE_DIR}/prm/stacked.prm
   ${step3_coarse}
   -DEDIT_FILE=step
   "-DEDIT_FROM=set calibration     = automatic"

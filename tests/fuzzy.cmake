@@ -1,3 +1,71 @@
-## Tests of the fuzzy machinery (fuzzy numbers, fuzzy parameters, interval
-## methods). Included from tests/CMakeLists.txt.
+## Tests of the fuzzy study: the machinery (fuzzy numbers, fuzzy parameters,
+## interval methods, the fuzzy contact model) and step-4 runs. Included from
+## tests/CMakeLists.txt.
 fuzzycontact_gtest(fuzzy)
+
+# A quick step-4: coarse meshes (1510 DoFs per component), 3 alpha levels,
+# 3 Extension Principle points per parameter and level.
+set(step4_quick
+  "-DEDIT_FILE=step"
+  "-DEDIT_FROM=set mesh refinements       = 2"
+  "-DEDIT_TO=set mesh refinements       = 0"
+  "-DEDIT2_FILE=step"
+  "-DEDIT2_FROM=set number of alpha levels = 11"
+  "-DEDIT2_TO=set number of alpha levels = 3"
+  "-DEDIT3_FILE=step"
+  "-DEDIT3_FROM=set points per dimension = 4"
+  "-DEDIT3_TO=set points per dimension = 3")
+
+fuzzycontact_program_test(step-4.quick_run step-4 overlap
+  ${step4_quick}
+  -DEXPECT=success
+  -DJSON_CHECKS=${CMAKE_CURRENT_SOURCE_DIR}/check_step-4.cmake)
+
+# Two MPI processes give the same bounds as one.
+add_test(NAME step-4.mpi_np2_same_as_np1
+  COMMAND ${CMAKE_COMMAND}
+    -DPROGRAM=$<TARGET_FILE:step-4>
+    -DPRM=${CMAKE_SOURCE_DIR}/prm/step-4.prm
+    -DSCENE=${CMAKE_SOURCE_DIR}/prm/overlap.prm
+    -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/work/step-4.mpi
+    -DOUTPUT=step-4-output
+    ${step4_quick}
+    "-DMPI_LAUNCHER=${DEAL_II_MPIEXEC}|${DEAL_II_MPIEXEC_NUMPROC_FLAG}|2"
+    -P ${CMAKE_CURRENT_SOURCE_DIR}/compare_mpi_runs.cmake)
+set_tests_properties(step-4.mpi_np2_same_as_np1 PROPERTIES
+  ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1"
+  PROCESSORS 2)
+
+# Bad input: each edits one line of prm/step-4.prm.
+set(step4_bad_inputs
+  "reversed_interval|set values   = 0.95, 1, 1.05|set values = 1.05, 1, 0.95|Fuzzy parameter P1.E: the values must not decrease"
+  "empty_interval|set values = 10e3, 50e3, 100e3|set values = 50e3, 50e3, 50e3|Fuzzy parameter P1.tip.force: the support .* is empty"
+  "no_values|set values = 10e3, 50e3, 100e3|set values =|Fuzzy parameter P1.tip.force: a triangular fuzzy number needs 3 values, got 0"
+  "nan_value|set values = 10e3, 50e3, 100e3|set values = 10e3, nan, 100e3|Fuzzy parameter P1.tip.force: values: <nan> is not a finite number"
+  "one_alpha_level|set number of alpha levels = 11|set number of alpha levels = 1|number of alpha levels must be at least 2"
+  "subsection_of_no_parameter|P1.E, P2.E, P1.tip.force|P1.E, P1.tip.force|There is no such subsection to be entered: Fuzzy parameter P2.E"
+  "unknown_key|set vertex method          = true|set vertex methods = true|No entry with name <vertex methods>"
+  "negative_modulus_support|set values   = 0.95, 1, 1.05|set values = -0.95, 1, 1.05|P1.E must be positive"
+  "noisy_sensitivities|set finite difference step = 1e-4|set finite difference step = 1e-7|the finite difference step must be well above the response tolerance")
+fuzzycontact_program_test(step-4.bad_input.unknown_parameter step-4 overlap
+  -DEXPECT=failure
+  -DEDIT_FILE=step
+  "-DEDIT_FROM=P1.E, P2.E, P1.tip.force"
+  "-DEDIT_TO=P1.E, P3.E, P1.tip.force"
+  -DEDIT2_FILE=step
+  "-DEDIT2_FROM=subsection Fuzzy parameter P2.E"
+  "-DEDIT2_TO=subsection Fuzzy parameter P3.E"
+  "-DMESSAGE=Scene quantity <P3.E>: the scene has no component <P3>")
+foreach(case ${step4_bad_inputs})
+  string(REPLACE "|" ";" fields "${case}")
+  list(GET fields 0 name)
+  list(GET fields 1 from)
+  list(GET fields 2 to)
+  list(GET fields 3 message)
+  fuzzycontact_program_test(step-4.bad_input.${name} step-4 overlap
+    -DEXPECT=failure
+    -DEDIT_FILE=step
+    "-DEDIT_FROM=${from}"
+    "-DEDIT_TO=${to}"
+    "-DMESSAGE=${message}")
+endforeach()

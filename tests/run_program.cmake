@@ -3,22 +3,23 @@
 #   cmake -DPROGRAM=<exe> -DPRM=<step .prm> -DSCENE=<scene .prm>
 #         -DWORKDIR=<folder> -DOUTPUT=<output folder name>
 #         [-DEDIT_FILE=step|scene -DEDIT_FROM=<text> -DEDIT_TO=<text>]
-#         [-DEDIT2_FILE=step|scene -DEDIT2_FROM=<text> -DEDIT2_TO=<text>]
-#         [-DEXTRA_SCENES=<scene .prm>;...]
+#         [-DEDIT2_...] [-DEDIT3_...] [-DEDIT4_...]  (the same, up to four)
+#         [-DEXTRA_FILES=<file>,<file>...]
+#         [-DLAUNCHER=<command>|<arg>|...]   (e.g. /usr/bin/mpiexec|-n|2)
 #         -DEXPECT=success|failure [-DMESSAGE=<regex>]
-#         [-DJSON_CHECKS=<check script>] [-DEXTRA_FILES=<file>,<file>...]
+#         [-DJSON_CHECKS=<check script>]
 #         -P run_program.cmake
 #
-# The step file and its scene are copied into WORKDIR (optionally with one
-# or two text replacements, to make a bad input out of a good one or a
-# quick run out of a long one), and so are EXTRA_SCENES (unedited) for
-# programs that read several scenes; the program runs there. For
+# The step file and its scene are copied into WORKDIR (optionally with up
+# to four text replacements, to make a bad input out of a good one or a
+# quick run out of a long one), and so are EXTRA_FILES (unedited) for step
+# files that name more than one scene; the program runs there, behind
+# LAUNCHER if given. For
 # EXPECT=failure the program must exit non-zero, print a message matching
 # MESSAGE on stderr and leave no output folder. For
 # EXPECT=success it must exit 0 and write OUTPUT/results.json; JSON_CHECKS
-# then names a CMake script that inspects the variable RESULTS_JSON.
-# EXTRA_FILES (comma-separated) are copied into WORKDIR unchanged, for step
-# files that name more than one scene.
+# then names a CMake script that inspects the variable RESULTS_JSON (and may
+# look at the other files in WORKDIR/OUTPUT).
 
 file(REMOVE_RECURSE "${WORKDIR}")
 file(MAKE_DIRECTORY "${WORKDIR}")
@@ -26,7 +27,7 @@ get_filename_component(prm_name "${PRM}" NAME)
 get_filename_component(scene_name "${SCENE}" NAME)
 file(READ "${PRM}" prm_text)
 file(READ "${SCENE}" scene_text)
-foreach(edit EDIT EDIT2)
+foreach(edit EDIT EDIT2 EDIT3 EDIT4)
   if(DEFINED ${edit}_FILE)
     if(${edit}_FILE STREQUAL "step")
       set(edited "${prm_text}")
@@ -45,9 +46,7 @@ foreach(edit EDIT EDIT2)
     endif()
   endif()
 endforeach()
-foreach(extra ${EXTRA_SCENES})
-  file(COPY "${extra}" DESTINATION "${WORKDIR}")
-endforeach()
+
 file(WRITE "${WORKDIR}/${prm_name}" "${prm_text}")
 file(WRITE "${WORKDIR}/${scene_name}" "${scene_text}")
 if(DEFINED EXTRA_FILES)
@@ -57,7 +56,8 @@ if(DEFINED EXTRA_FILES)
   endforeach()
 endif()
 
-execute_process(COMMAND "${PROGRAM}" "${prm_name}"
+string(REPLACE "|" ";" launcher "${LAUNCHER}")
+execute_process(COMMAND ${launcher} "${PROGRAM}" "${prm_name}"
   WORKING_DIRECTORY "${WORKDIR}"
   RESULT_VARIABLE status
   OUTPUT_VARIABLE out
