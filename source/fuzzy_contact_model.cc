@@ -378,40 +378,32 @@ namespace FuzzyContact
       }
 
     // C_r, f_r and the observation rows
-    const unsigned int rows = m.C_T.m();
-    r.gap_operator.reinit(rows, k);
-    {
-      FullMatrix<double> CTY(rows, n_m);
-      block(m.C_T, 0, rows, 0, n_T).mmult(CTY, Y);
+    // [A(:, 0..n_T) Y, B]: the rows of an operator on the new basis
+    const auto on_basis = [&](const FullMatrix<double> &A,
+                              const FullMatrix<double> &B) {
+      const unsigned int rows = A.m();
+      FullMatrix<double> AY(rows, n_m), result(rows, k);
+      if (rows == 0)
+        return result;
+      block(A, 0, rows, 0, n_T).mmult(AY, Y);
       for (unsigned int i = 0; i < rows; ++i)
         {
           for (unsigned int j = 0; j < n_m; ++j)
-            r.gap_operator(i, j) = CTY(i, j);
+            result(i, j) = AY(i, j);
           for (unsigned int j = 0; j < n_s; ++j)
-            r.gap_operator(i, n_m + j) = m.C_psi(i, j);
+            result(i, n_m + j) = B(i, j);
         }
-    }
+      return result;
+    };
+    r.gap_operator = on_basis(m.C_T, m.C_psi);
     r.load.reinit(k);
     for (unsigned int j = 0; j < n_m; ++j)
       for (unsigned int i = 0; i < n_T; ++i)
         r.load[j] += Y(i, j) * m.T_f[i];
     for (unsigned int j = 0; j < n_s; ++j)
       r.load[n_m + j] = m.psi_f[j];
-    r.observed_dofs          = m.nominal_matrices.observed_dofs;
-    const unsigned int n_obs = r.observed_dofs.size();
-    r.observation.reinit(n_obs, k);
-    if (n_obs > 0)
-      {
-        FullMatrix<double> OTY(n_obs, n_m);
-        block(m.O_T, 0, n_obs, 0, n_T).mmult(OTY, Y);
-        for (unsigned int i = 0; i < n_obs; ++i)
-          {
-            for (unsigned int j = 0; j < n_m; ++j)
-              r.observation(i, j) = OTY(i, j);
-            for (unsigned int j = 0; j < n_s; ++j)
-              r.observation(i, n_m + j) = m.O_psi(i, j);
-          }
-      }
+    r.observed_dofs = m.nominal_matrices.observed_dofs;
+    r.observation   = on_basis(m.O_T, m.O_psi);
     return r;
   }
 

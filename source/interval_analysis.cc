@@ -161,6 +161,27 @@ namespace FuzzyContact
       return result;
     }
 
+    // The sampling methods' common end: evaluate the points on the ranks,
+    // take the extremes per level, count and time.
+    FuzzyOutputBounds
+    bounds_by_sampling(const std::vector<FuzzyNumber>         &parameters,
+                       const std::vector<double>              &alpha,
+                       const std::vector<std::vector<double>> &points,
+                       const Response                         &response,
+                       const unsigned int                      n_outputs,
+                       const MPI_Comm                          comm,
+                       const Timer                            &timer)
+    {
+      const auto        outputs = evaluate_distributed(points, response, comm);
+      FuzzyOutputBounds result =
+        bounds_over_points(parameters, alpha, points, outputs, n_outputs);
+      result.n_evaluations = points.size();
+      result.wall_time     = timer.wall_time();
+      if (n_ranks(comm) > 1)
+        result.wall_time = Utilities::MPI::max(result.wall_time, comm);
+      return result;
+    }
+
     // Keeps each distinct point once, in the order first seen.
     void
     add_unique(std::vector<std::vector<double>> &points,
@@ -243,14 +264,13 @@ namespace FuzzyContact
             add_unique(points, seen, p);
           }
       }
-    const auto        outputs = evaluate_distributed(points, response, comm);
-    FuzzyOutputBounds result =
-      bounds_over_points(parameters, alpha, points, outputs, n_outputs);
-    result.n_evaluations = points.size();
-    result.wall_time     = timer.wall_time();
-    if (n_ranks(comm) > 1)
-      result.wall_time = Utilities::MPI::max(result.wall_time, comm);
-    return result;
+    return bounds_by_sampling(parameters,
+                              alpha,
+                              points,
+                              response,
+                              n_outputs,
+                              comm,
+                              timer);
   }
 
 
@@ -271,16 +291,15 @@ namespace FuzzyContact
                       const unsigned int              points_per_dimension,
                       const MPI_Comm                  comm)
   {
-    Timer      timer;
-    const auto points =
-      sampling_points(parameters, alpha, points_per_dimension);
-    const auto        outputs = evaluate_distributed(points, response, comm);
-    FuzzyOutputBounds result =
-      bounds_over_points(parameters, alpha, points, outputs, n_outputs);
-    result.n_evaluations = points.size();
-    result.wall_time     = timer.wall_time();
-    if (n_ranks(comm) > 1)
-      result.wall_time = Utilities::MPI::max(result.wall_time, comm);
-    return result;
+    Timer timer;
+    return bounds_by_sampling(parameters,
+                              alpha,
+                              sampling_points(parameters,
+                                              alpha,
+                                              points_per_dimension),
+                              response,
+                              n_outputs,
+                              comm,
+                              timer);
   }
 } // namespace FuzzyContact

@@ -35,21 +35,8 @@ set(step3_bad_inputs
   "initial_penetration|scene|set initial gap          = auto|set initial gap = -1e-3|Contact interface: initial penetration of 0.001 m at the slave node"
   "transition_points_out_of_order|step|set gap points      = 1e-3, 5e-3, 1e-2|set gap points = 5e-3, 1e-3, 1e-2|FL2C: gap points / force points: the input transition points must satisfy 0 < p1 < p2 < p3, got 0.005, 0.001, 0.01"
   "malformed_friction_list|step|set friction coefficients   = 0, 0.3|set friction coefficients = 0, x|friction coefficients: <x> is not a number")
-foreach(case ${step3_bad_inputs})
-  string(REPLACE "|" ";" fields "${case}")
-  list(GET fields 0 name)
-  list(GET fields 1 file)
-  list(GET fields 2 from)
-  list(GET fields 3 to)
-  list(GET fields 4 message)
-  fuzzycontact_program_test(step-3.bad_input.${name} step-3 overlap
-    -DEXPECT=failure
-    -DEXTRA_FILES=${CMAKE_SOURCE_DIR}/prm/stacked.prm
-    -DEDIT_FILE=${file}
-    "-DEDIT_FROM=${from}"
-    "-DEDIT_TO=${to}"
-    "-DMESSAGE=${message}")
-endforeach()
+fuzzycontact_bad_input_tests(step-3 overlap "${step3_bad_inputs}"
+  -DEXTRA_FILES=${CMAKE_SOURCE_DIR}/prm/stacked.prm)
 
 # FL2C with the paper's transition points oscillates on this scene: it must
 # say so and stop, not answer.

@@ -38,15 +38,15 @@ set_tests_properties(step-4.mpi_np2_same_as_np1 PROPERTIES
 
 # Bad input: each edits one line of prm/step-4.prm.
 set(step4_bad_inputs
-  "reversed_interval|set values   = 0.95, 1, 1.05|set values = 1.05, 1, 0.95|Fuzzy parameter P1.E: the values must not decrease"
-  "empty_interval|set values = 10e3, 50e3, 100e3|set values = 50e3, 50e3, 50e3|Fuzzy parameter P1.tip.force: the support .* is empty"
-  "no_values|set values = 10e3, 50e3, 100e3|set values =|Fuzzy parameter P1.tip.force: a triangular fuzzy number needs 3 values, got 0"
-  "nan_value|set values = 10e3, 50e3, 100e3|set values = 10e3, nan, 100e3|Fuzzy parameter P1.tip.force: values: <nan> is not a finite number"
-  "one_alpha_level|set number of alpha levels = 11|set number of alpha levels = 1|number of alpha levels must be at least 2"
-  "subsection_of_no_parameter|P1.E, P2.E, P1.tip.force|P1.E, P1.tip.force|There is no such subsection to be entered: Fuzzy parameter P2.E"
-  "unknown_key|set vertex method          = true|set vertex methods = true|No entry with name <vertex methods>"
-  "negative_modulus_support|set values   = 0.95, 1, 1.05|set values = -0.95, 1, 1.05|P1.E must be positive"
-  "noisy_sensitivities|set finite difference step = 1e-4|set finite difference step = 1e-7|the finite difference step must be well above the response tolerance")
+  "reversed_interval|step|set values   = 0.95, 1, 1.05|set values = 1.05, 1, 0.95|Fuzzy parameter P1.E: the values must not decrease"
+  "empty_interval|step|set values = 10e3, 50e3, 100e3|set values = 50e3, 50e3, 50e3|Fuzzy parameter P1.tip.force: the support .* is empty"
+  "no_values|step|set values = 10e3, 50e3, 100e3|set values =|Fuzzy parameter P1.tip.force: a triangular fuzzy number needs 3 values, got 0"
+  "nan_value|step|set values = 10e3, 50e3, 100e3|set values = 10e3, nan, 100e3|Fuzzy parameter P1.tip.force: values: <nan> is not a finite number"
+  "one_alpha_level|step|set number of alpha levels = 11|set number of alpha levels = 1|number of alpha levels must be at least 2"
+  "subsection_of_no_parameter|step|P1.E, P2.E, P1.tip.force|P1.E, P1.tip.force|There is no such subsection to be entered: Fuzzy parameter P2.E"
+  "unknown_key|step|set vertex method          = true|set vertex methods = true|No entry with name <vertex methods>"
+  "negative_modulus_support|step|set values   = 0.95, 1, 1.05|set values = -0.95, 1, 1.05|P1.E must be positive"
+  "noisy_sensitivities|step|set finite difference step = 1e-4|set finite difference step = 1e-7|the finite difference step must be well above the response tolerance")
 fuzzycontact_program_test(step-4.bad_input.unknown_parameter step-4 overlap
   -DEXPECT=failure
   -DEDIT_FILE=step
@@ -56,16 +56,4 @@ fuzzycontact_program_test(step-4.bad_input.unknown_parameter step-4 overlap
   "-DEDIT2_FROM=subsection Fuzzy parameter P2.E"
   "-DEDIT2_TO=subsection Fuzzy parameter P3.E"
   "-DMESSAGE=Scene quantity <P3.E>: the scene has no component <P3>")
-foreach(case ${step4_bad_inputs})
-  string(REPLACE "|" ";" fields "${case}")
-  list(GET fields 0 name)
-  list(GET fields 1 from)
-  list(GET fields 2 to)
-  list(GET fields 3 message)
-  fuzzycontact_program_test(step-4.bad_input.${name} step-4 overlap
-    -DEXPECT=failure
-    -DEDIT_FILE=step
-    "-DEDIT_FROM=${from}"
-    "-DEDIT_TO=${to}"
-    "-DMESSAGE=${message}")
-endforeach()
+fuzzycontact_bad_input_tests(step-4 overlap "${step4_bad_inputs}")

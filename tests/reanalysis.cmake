@@ -20,28 +20,16 @@ fuzzycontact_program_test(step-2.default_run step-2 cantilever-zones
 # is read, before anything is computed or written.
 # (No ';' in these strings: they are CMake lists.)
 set(step2_bad_inputs
-  "unknown_key|set changes in percent = 5, -10, 8|set change in percent = 5, -10, 8|No entry with name <change in percent>"
-  "missing_zone|set parameters         = beam.root.E|set parameters = beam.middle.E|Case b: reanalysis parameter <beam.middle.E>: component beam has no zone called <middle>"
-  "other_component|set parameters         = beam.E|set parameters = P1.E|Case a: reanalysis parameter <P1.E> does not belong to component beam"
-  "non_positive_modulus|set changes in percent = 5, -10, 8|set changes in percent = 5, -110, 8|Case c, sample 1: reanalysis parameter beam.tip.E: the change of -110 % makes the Young's modulus of zone tip of component beam non-positive"
-  "non_positive_density|set changes in percent = 5, -10, 8|set changes in percent = 5, -10, -100|Case c, sample 1: reanalysis parameter beam.tip.rho: the change of -100 % makes the density of zone tip of component beam non-positive"
-  "nan_change|set changes in percent = 5, -10, 8|set changes in percent = 5, nan, 8|Case c, sample 1 of 'changes in percent': <nan> is not a finite number"
-  "wrong_number_of_changes|set changes in percent = 5, -10, 8|set changes in percent = 5, -10|Case c, sample 1 of 'changes in percent': 2 changes given for 3 parameters"
-  "order_zero|set maximum order        = 3|set maximum order = 0|entry value 0 for the entry named maximum order does not match the given pattern"
-  "order_four|set maximum order        = 3|set maximum order = 4|entry value 4 for the entry named maximum order does not match the given pattern"
-  "duplicate_parameter|set parameters         = beam.root.E, beam.tip.E, beam.tip.rho|set parameters = beam.root.E, beam.tip.E, beam.root.E|Case c: reanalysis parameters <beam.root.E> and <beam.root.E> change the same property of the same zones"
-  "cutoff_frequency|set cutoff frequency = 0|set cutoff frequency = 20000|step-2 reanalyses a fixed number of modes")
-foreach(case ${step2_bad_inputs})
-  string(REPLACE "|" ";" fields "${case}")
-  list(GET fields 0 name)
-  list(GET fields 1 from)
-  list(GET fields 2 to)
-  list(GET fields 3 message)
-  fuzzycontact_program_test(step-2.bad_input.${name} step-2 cantilever-zones
-    ${step2_extra_files}
-    -DEXPECT=failure
-    -DEDIT_FILE=step
-    "-DEDIT_FROM=${from}"
-    "-DEDIT_TO=${to}"
-    "-DMESSAGE=${message}")
-endforeach()
+  "unknown_key|step|set changes in percent = 5, -10, 8|set change in percent = 5, -10, 8|No entry with name <change in percent>"
+  "missing_zone|step|set parameters         = beam.root.E|set parameters = beam.middle.E|Case b: reanalysis parameter <beam.middle.E>: component beam has no zone called <middle>"
+  "other_component|step|set parameters         = beam.E|set parameters = P1.E|Case a: reanalysis parameter <P1.E> does not belong to component beam"
+  "non_positive_modulus|step|set changes in percent = 5, -10, 8|set changes in percent = 5, -110, 8|Case c, sample 1: reanalysis parameter beam.tip.E: the change of -110 % makes the Young's modulus of zone tip of component beam non-positive"
+  "non_positive_density|step|set changes in percent = 5, -10, 8|set changes in percent = 5, -10, -100|Case c, sample 1: reanalysis parameter beam.tip.rho: the change of -100 % makes the density of zone tip of component beam non-positive"
+  "nan_change|step|set changes in percent = 5, -10, 8|set changes in percent = 5, nan, 8|Case c, sample 1 of 'changes in percent': <nan> is not a finite number"
+  "wrong_number_of_changes|step|set changes in percent = 5, -10, 8|set changes in percent = 5, -10|Case c, sample 1 of 'changes in percent': 2 changes given for 3 parameters"
+  "order_zero|step|set maximum order        = 3|set maximum order = 0|entry value 0 for the entry named maximum order does not match the given pattern"
+  "order_four|step|set maximum order        = 3|set maximum order = 4|entry value 4 for the entry named maximum order does not match the given pattern"
+  "duplicate_parameter|step|set parameters         = beam.root.E, beam.tip.E, beam.tip.rho|set parameters = beam.root.E, beam.tip.E, beam.root.E|Case c: reanalysis parameters <beam.root.E> and <beam.root.E> change the same property of the same zones"
+  "cutoff_frequency|step|set cutoff frequency = 0|set cutoff frequency = 20000|step-2 reanalyses a fixed number of modes")
+fuzzycontact_bad_input_tests(step-2 cantilever-zones "${step2_bad_inputs}"
+  ${step2_extra_files})
