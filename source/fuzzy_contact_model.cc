@@ -24,6 +24,15 @@ namespace FuzzyContact
                       "Add static correction modes for the contact and load "
                       "DoFs to each component's modes (else modes only, "
                       "as in the paper).");
+    prm.declare_entry("zone correction",
+                      "residual flexibility",
+                      Patterns::Selection("residual flexibility|galerkin"),
+                      "For zone moduli and densities (re-analysed modes): "
+                      "keep the static correction's flexibility at its "
+                      "nominal value ('residual flexibility', cheap) or "
+                      "project the stiffness onto [re-analysed modes, static "
+                      "correction modes] ('galerkin', more accurate, a dense "
+                      "factorisation per evaluation).");
     prm.leave_subsection();
     ModalParameters::declare_parameters(prm);
     ReanalysisSettings::declare_parameters(prm);
@@ -37,6 +46,9 @@ namespace FuzzyContact
     mesh_refinements = prm.get_integer("mesh refinements");
     prm.enter_subsection("Reduced models");
     static_correction = prm.get_bool("static correction");
+    zone_correction   = prm.get("zone correction") == "galerkin"
+                          ? ZoneCorrection::galerkin
+                          : ZoneCorrection::residual_flexibility;
     prm.leave_subsection();
     modal.parse_parameters(prm);
     AssertThrow(modal.cutoff_frequency == 0,
@@ -49,6 +61,32 @@ namespace FuzzyContact
 
   namespace
   {
+    // Copies the block [rows, columns) of @p A.
+    FullMatrix<double>
+    block(const FullMatrix<double> &A,
+          const unsigned int        row_begin,
+          const unsigned int        n_rows,
+          const unsigned int        column_begin,
+          const unsigned int        n_columns);
+
+    // The reduced matrices of the basis vectors [begin, begin + n) of @p r.
+    ReducedComponentMatrices
+    columns(const ReducedComponentMatrices &r,
+            const unsigned int              begin,
+            const unsigned int              n)
+    {
+      ReducedComponentMatrices part;
+      part.stiffness = block(r.stiffness, begin, n, begin, n);
+      part.gap_operator =
+        block(r.gap_operator, 0, r.gap_operator.m(), begin, n);
+      part.load.reinit(n);
+      for (unsigned int i = 0; i < n; ++i)
+        part.load[i] = r.load[begin + i];
+      part.observed_dofs = r.observed_dofs;
+      part.observation   = block(r.observation, 0, r.observation.m(), begin, n);
+      return part;
+    }
+
     // Copies the block [rows, columns) of @p A.
     FullMatrix<double>
     block(const FullMatrix<double> &A,
@@ -238,15 +276,18 @@ namespace FuzzyContact
                                      settings.reanalysis.residual_check);
         }
 
-        // What turns Y(p) into reduced matrices: T^T K_z Psi, Psi^T K_z Psi,
-        // C T, C Psi, the rows of T and Psi at the observed DoFs, T^T f and
-        // Psi^T f.
+        // What turns Y(p) into reduced matrices: C T, the rows of T at the
+        // observed DoFs, T^T f, and for the Galerkin correction also
+        // T^T K_z Psi, Psi^T K_z Psi, C Psi, the rows of Psi and Psi^T f.
         auto                scope = time("reanalysis projections");
         const ReducedBasis &T     = m.reanalysis->basis();
         const unsigned int  n_m   = m.reduced->n_modes();
-        const unsigned int  n_s   = m.reduced->n_corrections();
-        const unsigned int  n_T   = T.size();
-        Vector<double>      Kt(component.n_dofs());
+        const bool          galerkin =
+          settings.zone_correction ==
+          FuzzyContactModelSettings::ZoneCorrection::galerkin;
+        const unsigned int n_s = galerkin ? m.reduced->n_corrections() : 0;
+        const unsigned int n_T = T.size();
+        Vector<double>     Kt(component.n_dofs());
         for (unsigned int z = 0; z < component.n_zones(); ++z)
           {
             FullMatrix<double> TKpsi(n_T, n_s);
@@ -283,6 +324,22 @@ namespace FuzzyContact
       reduced_model = std::make_unique<ReducedContactModel>(std::move(nominal),
                                                             nominal_gaps,
                                                             nominal_mu);
+      // Residual flexibility: the static correction modes' part of a
+      // re-analysed component stays; only its modal part will change. At
+      // the nominal point the split is exact: the correction modes are
+      // K-orthogonal to the modes, K_r = diag(Lambda, I).
+      for (unsigned int c = 0; c < models.size(); ++c)
+        if (models[c].treatment == Treatment::hptp &&
+            settings.zone_correction ==
+              FuzzyContactModelSettings::ZoneCorrection::residual_flexibility &&
+            models[c].reduced->n_corrections() > 0)
+          {
+            const ReducedComponentMatrices &r   = models[c].nominal_matrices;
+            const unsigned int              n_m = models[c].reduced->n_modes();
+            const unsigned int n_s = models[c].reduced->n_corrections();
+            reduced_model->replace_component(c, columns(r, 0, n_m));
+            reduced_model->set_fixed_part(c, columns(r, n_m, n_s));
+          }
     }
   }
 
@@ -340,8 +397,9 @@ namespace FuzzyContact
     const ReanalysedModes     modes = m.reanalysis->online(t);
     const unsigned int        n_T   = modes.basis_size;
     const unsigned int        n_m   = modes.Y.n();
-    const unsigned int        n_s   = m.reduced->n_corrections();
-    const unsigned int        k     = n_m + n_s;
+    // (0 unless the static correction enters by Galerkin projection)
+    const unsigned int        n_s = m.C_psi.n();
+    const unsigned int        k   = n_m + n_s;
     const std::vector<double> E = m.reanalysis->model().zone_materials(t).first;
 
     const FullMatrix<double> Y = block(modes.Y, 0, n_T, 0, n_m);

@@ -373,16 +373,12 @@ namespace FuzzyContact
 
 
   ReducedContactModel::ReducedContactModel(
-    std::vector<ReducedComponentMatrices> components_,
+    std::vector<ReducedComponentMatrices> components,
     const Vector<double>                 &g_initial,
     const std::vector<double>            &mu)
-      : components(std::move(components_))
+      : variable(components.size())
+      , fixed(components.size())
       , scales(components.size(), 1.)
-      , factors(components.size())
-      , flexibilities(components.size())
-      , load_gaps(components.size())
-      , observation_flexibility(components.size())
-      , observation_load(components.size())
   {
     const unsigned int m = g_initial.size();
     AssertThrow(mu.size() * 2 == m,
@@ -391,28 +387,30 @@ namespace FuzzyContact
     problem_.g_initial = g_initial;
     problem_.mu        = mu;
     for (unsigned int c = 0; c < components.size(); ++c)
-      compute_blocks(c);
+      {
+        variable[c].matrices = std::move(components[c]);
+        compute_blocks(variable[c]);
+      }
     assemble_problem();
   }
 
 
   void
-  ReducedContactModel::compute_blocks(const unsigned int c)
+  ReducedContactModel::compute_blocks(Part &part) const
   {
     const unsigned int              m = problem_.g_initial.size();
-    const ReducedComponentMatrices &r = components[c];
+    const ReducedComponentMatrices &r = part.matrices;
     const unsigned int              k = r.stiffness.m();
     AssertThrow(r.stiffness.n() == k && r.gap_operator.m() == m &&
                   r.gap_operator.n() == k && r.load.size() == k &&
                   r.observation.m() == r.observed_dofs.size() &&
                   (r.observed_dofs.empty() || r.observation.n() == k),
-                ExcMessage("ReducedContactModel: the reduced matrices of "
-                           "component " +
-                           std::to_string(c) + " do not fit together."));
+                ExcMessage("ReducedContactModel: the reduced matrices of a "
+                           "component do not fit together."));
     // (Kept behind a pointer: copying a LAPACKFullMatrix forgets that it
     // holds a factorisation.)
-    auto factor_pointer = std::make_unique<LAPACKFullMatrix<double>>(k, k);
-    LAPACKFullMatrix<double> &factor = *factor_pointer;
+    part.factor = std::make_unique<LAPACKFullMatrix<double>>(k, k);
+    LAPACKFullMatrix<double> &factor = *part.factor;
     factor                           = r.stiffness;
     factor.set_property(LAPACKSupport::symmetric);
     factor.compute_cholesky_factorization();
@@ -431,26 +429,24 @@ namespace FuzzyContact
     for (unsigned int i = 0; i < m; ++i)
       for (unsigned int j = 0; j < i; ++j)
         Wc(i, j) = Wc(j, i) = 0.5 * (Wc(i, j) + Wc(j, i));
-    flexibilities[c] = std::move(Wc);
+    part.flexibility = std::move(Wc);
 
     Vector<double> q = r.load;
     factor.solve(q);
-    load_gaps[c].reinit(m);
-    r.gap_operator.vmult(load_gaps[c], q);
+    part.load_gaps.reinit(m);
+    r.gap_operator.vmult(part.load_gaps, q);
 
     // Recovery of the observed displacements without a reduced solve:
     // u_obs = lambda O K_r^{-1} f_r + (O K_r^{-1} C_r^T) p.
     const unsigned int n_obs = r.observed_dofs.size();
-    FullMatrix<double> OY(n_obs, m);
-    Vector<double>     Oq(n_obs);
+    part.observation_flexibility.reinit(n_obs, m);
+    part.observation_load.reinit(n_obs);
     if (n_obs > 0)
       {
-        r.observation.mmult(OY, Yf);
-        r.observation.vmult(Oq, q);
+        r.observation.mmult(part.observation_flexibility, Yf);
+        r.observation.vmult(part.observation_load, q);
       }
-    observation_flexibility[c] = std::move(OY);
-    observation_load[c]        = std::move(Oq);
-    factors[c]                 = std::move(factor_pointer);
+    part.present = true;
   }
 
 
@@ -460,11 +456,13 @@ namespace FuzzyContact
     const unsigned int m = problem_.g_initial.size();
     problem_.W.reinit(m, m);
     problem_.g_load.reinit(m);
-    for (unsigned int c = 0; c < components.size(); ++c)
-      {
-        problem_.W.add(1. / scales[c], flexibilities[c]);
-        problem_.g_load.add(1. / scales[c], load_gaps[c]);
-      }
+    for (unsigned int c = 0; c < variable.size(); ++c)
+      for (const Part *part : {&variable[c], &fixed[c]})
+        if (part->present)
+          {
+            problem_.W.add(1. / scales[c], part->flexibility);
+            problem_.g_load.add(1. / scales[c], part->load_gaps);
+          }
     problem_.check();
   }
 
@@ -472,7 +470,7 @@ namespace FuzzyContact
   void
   ReducedContactModel::set_stiffness_scales(const std::vector<double> &s)
   {
-    AssertThrow(s.size() == components.size(),
+    AssertThrow(s.size() == variable.size(),
                 ExcMessage("ReducedContactModel: one stiffness scale per "
                            "component is expected."));
     for (const double x : s)
@@ -490,10 +488,24 @@ namespace FuzzyContact
   ReducedContactModel::replace_component(const unsigned int       c,
                                          ReducedComponentMatrices matrices)
   {
-    AssertIndexRange(c, components.size());
-    components[c] = std::move(matrices);
-    scales[c]     = 1.;
-    compute_blocks(c);
+    AssertIndexRange(c, variable.size());
+    variable[c].matrices = std::move(matrices);
+    scales[c]            = 1.;
+    compute_blocks(variable[c]);
+    assemble_problem();
+  }
+
+
+  void
+  ReducedContactModel::set_fixed_part(const unsigned int       c,
+                                      ReducedComponentMatrices matrices)
+  {
+    AssertIndexRange(c, fixed.size());
+    AssertThrow(matrices.observed_dofs == variable[c].matrices.observed_dofs,
+                ExcMessage("ReducedContactModel: the fixed part of a "
+                           "component must observe the same DoFs."));
+    fixed[c].matrices = std::move(matrices);
+    compute_blocks(fixed[c]);
     assemble_problem();
   }
 
@@ -510,17 +522,21 @@ namespace FuzzyContact
     return problem_;
   }
 
-  const FullMatrix<double> &
+  FullMatrix<double>
   ReducedContactModel::component_flexibility(const unsigned int c) const
   {
-    AssertIndexRange(c, flexibilities.size());
-    return flexibilities[c];
+    AssertIndexRange(c, variable.size());
+    FullMatrix<double> W = variable[c].flexibility;
+    if (fixed[c].present)
+      W.add(1., fixed[c].flexibility);
+    W /= scales[c];
+    return W;
   }
 
   unsigned int
   ReducedContactModel::n_components() const
   {
-    return components.size();
+    return variable.size();
   }
 
 
@@ -529,14 +545,27 @@ namespace FuzzyContact
                                    const double          load_factor) const
   {
     std::vector<Vector<double>> q;
-    for (unsigned int c = 0; c < components.size(); ++c)
+    for (unsigned int c = 0; c < variable.size(); ++c)
       {
-        Vector<double> rhs = components[c].load;
-        rhs *= load_factor;
-        components[c].gap_operator.Tvmult_add(rhs, p);
-        factors[c]->solve(rhs);
-        rhs /= scales[c];
-        q.push_back(std::move(rhs));
+        std::vector<Vector<double>> parts;
+        for (const Part *part : {&variable[c], &fixed[c]})
+          if (part->present)
+            {
+              Vector<double> rhs = part->matrices.load;
+              rhs *= load_factor;
+              part->matrices.gap_operator.Tvmult_add(rhs, p);
+              part->factor->solve(rhs);
+              rhs /= scales[c];
+              parts.push_back(std::move(rhs));
+            }
+        Vector<double> qc(parts[0].size() +
+                          (parts.size() > 1 ? parts[1].size() : 0));
+        for (unsigned int i = 0; i < parts[0].size(); ++i)
+          qc[i] = parts[0][i];
+        if (parts.size() > 1)
+          for (unsigned int i = 0; i < parts[1].size(); ++i)
+            qc[parts[0].size() + i] = parts[1][i];
+        q.push_back(std::move(qc));
       }
     return q;
   }
@@ -559,21 +588,25 @@ namespace FuzzyContact
     if (report != nullptr)
       {
         const auto displacement = [&](const FaceNode &node, const unsigned d) {
-          const ReducedComponentMatrices &r = components[node.component];
-          const auto it                     = std::find(r.observed_dofs.begin(),
-                                    r.observed_dofs.end(),
-                                    node.dofs[d]);
-          AssertThrow(it != r.observed_dofs.end(),
+          const unsigned int                          c = node.component;
+          const std::vector<types::global_dof_index> &observed =
+            variable[c].matrices.observed_dofs;
+          const auto it =
+            std::find(observed.begin(), observed.end(), node.dofs[d]);
+          AssertThrow(it != observed.end(),
                       ExcMessage("ReducedContactModel: a report DoF is not "
                                  "among the observed DoFs."));
-          const unsigned int        row = it - r.observed_dofs.begin();
-          const FullMatrix<double> &OY =
-            observation_flexibility[node.component];
-          double u = load_factor * observation_load[node.component][row];
-          for (unsigned int j = 0; j < state.p.size(); ++j)
-            if (state.p[j] != 0)
-              u += OY(row, j) * state.p[j];
-          return u / scales[node.component];
+          const unsigned int row = it - observed.begin();
+          double             u   = 0;
+          for (const Part *part : {&variable[c], &fixed[c]})
+            if (part->present)
+              {
+                u += load_factor * part->observation_load[row];
+                for (unsigned int j = 0; j < state.p.size(); ++j)
+                  if (state.p[j] != 0)
+                    u += part->observation_flexibility(row, j) * state.p[j];
+              }
+          return u / scales[c];
         };
         for (unsigned int d = 0; d < 2; ++d)
           {

@@ -19,9 +19,14 @@
 //      * zone moduli and densities change the mode shapes: the modes are
 //        re-analysed by the parameter-independent HPTP (modes T Y(p), with
 //        the order chosen offline from a tolerance on the corners of the
-//        parameter box), the reduced basis becomes [T Y(p), Psi] with the
-//        nominal static correction modes Psi, and the component's reduced
-//        matrices are projected from quantities precomputed per zone;
+//        parameter box). The static correction then enters one of two ways:
+//        "residual flexibility" (the default) keeps the flexibility of the
+//        static correction modes at its nominal value and adds it to that
+//        of the re-analysed modes (MacNeal), O(rows^2 n_modes) per
+//        evaluation; "galerkin" projects the stiffness onto the basis
+//        [T Y(p), Psi] (zone projections precomputed offline), more accurate
+//        but a dense factorisation of the whole reduced stiffness per
+//        evaluation;
 //      * the load scales the load term, mu and the gap enter the small
 //        contact problem directly;
 //    then the FL2C regulator solves the reduced contact problem.
@@ -69,14 +74,22 @@ namespace FuzzyContact
     /** Global refinements of every component mesh. */
     unsigned int mesh_refinements = 2;
     /** Static correction modes in the reduced model (else modes only). */
-    bool               static_correction = true;
+    bool static_correction = true;
+    /** How the static correction enters for zone parameters (see above). */
+    enum class ZoneCorrection
+    {
+      residual_flexibility,
+      galerkin
+    };
+    ZoneCorrection     zone_correction = ZoneCorrection::residual_flexibility;
     ModalParameters    modal;
     ReanalysisSettings reanalysis;
     FL2CParameters     fl2c;
 
     /**
      * Declares "mesh refinements" and the subsections "Reduced models"
-     * (static correction), "Modal analysis", "Reanalysis" and "FL2C".
+     * (static correction, zone correction), "Modal analysis", "Reanalysis" and
+     * "FL2C".
      */
     static void
     declare_parameters(ParameterHandler &prm);

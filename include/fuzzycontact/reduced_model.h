@@ -189,13 +189,29 @@ namespace FuzzyContact
     void
     replace_component(const unsigned int c, ReducedComponentMatrices matrices);
 
-    /** C_r,c K_r,c^{-1} C_r,c^T: W is their sum. */
-    const FullMatrix<double> &
+    /**
+     * Gives component @p c a second, fixed part: its reduced model becomes
+     * the sum of the matrices set by replace_component() (the variable
+     * part) and these, whose blocks are formed once here. This is how the
+     * residual flexibility of static correction modes stays at its nominal
+     * value while the modal part is re-analysed (MacNeal's residual
+     * flexibility): a new modal part then costs O(rows^2 n_modes), not a
+     * factorisation of the whole reduced stiffness.
+     */
+    void
+    set_fixed_part(const unsigned int c, ReducedComponentMatrices fixed);
+
+    /** C_r,c K_r,c^{-1} C_r,c^T (both parts): W is their sum. */
+    FullMatrix<double>
     component_flexibility(const unsigned int c) const;
     unsigned int
     n_components() const;
 
-    /** Modal coordinates q_c = K_r,c^{-1} (lambda f_r,c + C_r,c^T p). */
+    /**
+     * Modal coordinates q_c = K_r,c^{-1} (lambda f_r,c + C_r,c^T p); with a
+     * fixed part, those of the variable part followed by those of the
+     * fixed one.
+     */
     std::vector<Vector<double>>
     coordinates(const Vector<double> &p, const double load_factor) const;
 
@@ -213,24 +229,30 @@ namespace FuzzyContact
              const std::string  &solver) const;
 
   private:
-    // Factorises component c's K_r and forms its blocks (W_c, g_load,c and
-    // the observation matrices).
+    // The reduced matrices of (a part of) one component and what is formed
+    // from them: the factorised K_r, W_c = C_r K_r^{-1} C_r^T, g_load,c =
+    // C_r K_r^{-1} f_r, and O K_r^{-1} C_r^T, O K_r^{-1} f_r, the observed
+    // displacements straight from the forces.
+    struct Part
+    {
+      ReducedComponentMatrices                  matrices;
+      std::unique_ptr<LAPACKFullMatrix<double>> factor;
+      FullMatrix<double>                        flexibility;
+      Vector<double>                            load_gaps;
+      FullMatrix<double>                        observation_flexibility;
+      Vector<double>                            observation_load;
+      bool                                      present = false;
+    };
+    // Checks and factorises a part's matrices, and forms its blocks.
     void
-    compute_blocks(const unsigned int c);
+    compute_blocks(Part &part) const;
     // W = sum_c W_c / s_c, g_load = sum_c g_load,c / s_c.
     void
     assemble_problem();
 
-    std::vector<ReducedComponentMatrices>                  components;
-    std::vector<double>                                    scales;
-    std::vector<std::unique_ptr<LAPACKFullMatrix<double>>> factors;
-    std::vector<FullMatrix<double>>                        flexibilities;
-    std::vector<Vector<double>>                            load_gaps;
-    // O_c K_r,c^{-1} C_r,c^T and O_c K_r,c^{-1} f_r,c: observed
-    // displacements straight from the forces.
-    std::vector<FullMatrix<double>> observation_flexibility;
-    std::vector<Vector<double>>     observation_load;
-    ContactProblem                  problem_;
+    std::vector<Part>   variable, fixed;
+    std::vector<double> scales;
+    ContactProblem      problem_;
   };
 } // namespace FuzzyContact
 
