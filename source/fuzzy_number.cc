@@ -30,15 +30,22 @@ namespace FuzzyContact
 
   namespace
   {
+    // @p n_values: 3 for a triangle (its peak is p[1] = p[2]), 4 for a
+    // trapezoid; the message lists them as they were given.
     void
-    check_points(const std::array<double, 4> &p, const std::string &what)
+    check_points(const std::array<double, 4> &p,
+                 const std::string           &what,
+                 const unsigned int           n_values)
     {
       for (const double x : p)
         AssertThrow(std::isfinite(x),
                     ExcMessage(what + ": every value must be a finite "
                                       "number."));
       std::ostringstream values;
-      values << p[0] << ", " << p[1] << ", " << p[2] << ", " << p[3];
+      values << p[0] << ", " << p[1] << ", ";
+      if (n_values == 4)
+        values << p[2] << ", ";
+      values << p[3];
       AssertThrow(p[0] <= p[1] && p[1] <= p[2] && p[2] <= p[3],
                   ExcMessage(what +
                              ": the values must not decrease (lower end of "
@@ -78,7 +85,7 @@ namespace FuzzyContact
                           const double       b,
                           const std::string &what)
   {
-    check_points({{a, m, m, b}}, what);
+    check_points({{a, m, m, b}}, what, 3);
     return FuzzyNumber(Shape::triangular, {{a, m, m, b}});
   }
 
@@ -89,7 +96,7 @@ namespace FuzzyContact
                            const double       b,
                            const std::string &what)
   {
-    check_points({{a, m1, m2, b}}, what);
+    check_points({{a, m1, m2, b}}, what, 4);
     return FuzzyNumber(Shape::trapezoidal, {{a, m1, m2, b}});
   }
 
