@@ -32,6 +32,26 @@ namespace
       }
     return "";
   }
+
+  // The fuzzy parameters of a step file's text, bound to @p scene.
+  FuzzyParameterSet
+  fuzzy_parameters(const Scene &scene, const std::string &text)
+  {
+    FuzzyParameterSet set;
+    Input::parse_in_passes(
+      text,
+      "test.prm",
+      [&](dealii::ParameterHandler &prm) {
+        set.declare_parameters(prm);
+      },
+      [&](dealii::ParameterHandler &prm) {
+        return set.learn_names(prm);
+      },
+      [&](dealii::ParameterHandler &prm) {
+        set.parse_parameters(prm, scene);
+      });
+    return set;
+  }
 } // namespace
 
 
@@ -152,8 +172,8 @@ TEST(SceneQuantity, NamesValuesAndErrors)
 
 TEST(FuzzyParameterSet, ReadsRelativeAndAbsoluteValues)
 {
-  const Scene       scene = Scene::read(source_dir + "/prm/overlap.prm");
-  const std::string text  = R"(
+  const Scene             scene = Scene::read(source_dir + "/prm/overlap.prm");
+  const std::string       text  = R"(
 set fuzzy parameters = P1.E, P1.tip.force
 subsection Fuzzy parameter P1.E
   set values   = 0.95, 1, 1.05
@@ -164,19 +184,7 @@ subsection Fuzzy parameter P1.tip.force
   set values = 10e3, 40e3, 60e3, 100e3
 end
 )";
-  FuzzyParameterSet set;
-  Input::parse_in_passes(
-    text,
-    "test.prm",
-    [&](dealii::ParameterHandler &prm) {
-      set.declare_parameters(prm);
-    },
-    [&](dealii::ParameterHandler &prm) {
-      return set.learn_names(prm);
-    },
-    [&](dealii::ParameterHandler &prm) {
-      set.parse_parameters(prm, scene);
-    });
+  const FuzzyParameterSet set   = fuzzy_parameters(scene, text);
   ASSERT_EQ(set.parameters().size(), 2u);
   EXPECT_DOUBLE_EQ(set.numbers()[0].alpha_cut(0).lower, 0.95 * 210e9);
   EXPECT_DOUBLE_EQ(set.numbers()[0].alpha_cut(0).upper, 1.05 * 210e9);
@@ -191,19 +199,7 @@ TEST(FuzzyParameterSet, BadInputIsRefusedWithAMessage)
   const Scene scene = Scene::read(source_dir + "/prm/overlap.prm");
   const auto  parse = [&](const std::string &text) {
     return error_of([&] {
-      FuzzyParameterSet set;
-      Input::parse_in_passes(
-        text,
-        "test.prm",
-        [&](dealii::ParameterHandler &prm) {
-          set.declare_parameters(prm);
-        },
-        [&](dealii::ParameterHandler &prm) {
-          return set.learn_names(prm);
-        },
-        [&](dealii::ParameterHandler &prm) {
-          set.parse_parameters(prm, scene);
-        });
+      fuzzy_parameters(scene, text);
     });
   };
   EXPECT_NE(parse("set fuzzy parameters = P1.G\nsubsection Fuzzy parameter "
@@ -407,24 +403,6 @@ TEST(IntervalMethods, CacheCountsDistinctEvaluations)
 
 namespace
 {
-  FuzzyParameterSet
-  fuzzy_parameters(const Scene &scene, const std::string &text)
-  {
-    FuzzyParameterSet set;
-    Input::parse_in_passes(
-      text,
-      "test.prm",
-      [&](dealii::ParameterHandler &prm) {
-        set.declare_parameters(prm);
-      },
-      [&](dealii::ParameterHandler &prm) {
-        return set.learn_names(prm);
-      },
-      [&](dealii::ParameterHandler &prm) {
-        set.parse_parameters(prm, scene);
-      });
-    return set;
-  }
 
   // The coarse meshes of the scenes (1510 DoFs per component) and an FL2C
   // tolerance far below the differences the tests look at.
@@ -515,7 +493,7 @@ TEST(FuzzyContactModel, ZoneParametersGoThroughTheReanalysis)
   scene.components[0].zones         = {
             MaterialZone{"root", {{0, 0.08}}, {{-1, 1}}, 210e9, 0.3, 7900},
             MaterialZone{"rest", {{0.08, 0.2}}, {{-1, 1}}, 210e9, 0.3, 7900}};
-  const FuzzyParameterSet set = fuzzy_parameters(scene, R"(
+  const FuzzyParameterSet set    = fuzzy_parameters(scene, R"(
 set fuzzy parameters = P1.root.E, P1.rest.rho
 subsection Fuzzy parameter P1.root.E
   set values   = 0.9, 1, 1.1
@@ -526,9 +504,9 @@ subsection Fuzzy parameter P1.rest.rho
   set relative = true
 end
 )");
-  const auto points = corners_and_centre(set);
-  const auto centre = points.back();
-  double     worst_of[2];
+  const auto              points = corners_and_centre(set);
+  const auto              centre = points.back();
+  double                  worst_of[2];
   for (const auto correction :
        {FuzzyContactModelSettings::ZoneCorrection::residual_flexibility,
         FuzzyContactModelSettings::ZoneCorrection::galerkin})
@@ -548,9 +526,9 @@ end
       double &worst = worst_of[static_cast<int>(correction)];
       worst         = 0;
       for (const auto &p : points)
-        worst = std::max(worst,
-                         largest_difference(model.reduced(p),
-                                            model.full_order(p)));
+        worst =
+          std::max(worst,
+                   largest_difference(model.reduced(p), model.full_order(p)));
       EXPECT_GT(worst, 1e-9); // an approximation away from it
     }
   // Measured on this mesh at +-10 % of the root modulus and of the density
