@@ -215,6 +215,16 @@ namespace FuzzyContact
         m.treatment = whole ? Treatment::scaling : Treatment::hptp;
       }
 
+    // Whether component c's static correction enters as a fixed residual
+    // flexibility beside its re-analysed modes.
+    const auto splits = [&](const unsigned int c) {
+      return models[c].treatment == Treatment::hptp &&
+             settings.zone_correction ==
+               FuzzyContactModelSettings::ZoneCorrection::
+                 residual_flexibility &&
+             models[c].reduced->n_corrections() > 0;
+    };
+
     // Modes, static correction and reduced matrices of every component.
     const ModalSolver                     solver(settings.modal);
     std::vector<ReducedComponentMatrices> nominal;
@@ -241,7 +251,16 @@ namespace FuzzyContact
           m.nominal_matrices =
             m.reduced->matrices(interface->gap_operator(c), observed[c]);
         }
-        nominal.push_back(m.nominal_matrices);
+        // Residual flexibility: the static correction modes' part of a
+        // re-analysed component stays (set below as the fixed part); only
+        // its modal part will change. At the nominal point the split is
+        // exact: the correction modes are K-orthogonal to the modes,
+        // K_r = diag(Lambda, I).
+        if (splits(c))
+          nominal.push_back(
+            columns(m.nominal_matrices, 0, m.reduced->n_modes()));
+        else
+          nominal.push_back(m.nominal_matrices);
 
         if (m.treatment != Treatment::hptp)
           continue;
@@ -324,22 +343,13 @@ namespace FuzzyContact
       reduced_model = std::make_unique<ReducedContactModel>(std::move(nominal),
                                                             nominal_gaps,
                                                             nominal_mu);
-      // Residual flexibility: the static correction modes' part of a
-      // re-analysed component stays; only its modal part will change. At
-      // the nominal point the split is exact: the correction modes are
-      // K-orthogonal to the modes, K_r = diag(Lambda, I).
       for (unsigned int c = 0; c < models.size(); ++c)
-        if (models[c].treatment == Treatment::hptp &&
-            settings.zone_correction ==
-              FuzzyContactModelSettings::ZoneCorrection::residual_flexibility &&
-            models[c].reduced->n_corrections() > 0)
-          {
-            const ReducedComponentMatrices &r   = models[c].nominal_matrices;
-            const unsigned int              n_m = models[c].reduced->n_modes();
-            const unsigned int n_s = models[c].reduced->n_corrections();
-            reduced_model->replace_component(c, columns(r, 0, n_m));
-            reduced_model->set_fixed_part(c, columns(r, n_m, n_s));
-          }
+        if (splits(c))
+          reduced_model->set_fixed_part(
+            c,
+            columns(models[c].nominal_matrices,
+                    models[c].reduced->n_modes(),
+                    models[c].reduced->n_corrections()));
     }
   }
 
@@ -470,7 +480,6 @@ namespace FuzzyContact
   FuzzyContactModel::reduced(const std::vector<double> &values)
   {
     check_values(values);
-    ++n_reduced;
 
     std::vector<double> scales(components.size(), 1.);
     for (unsigned int c = 0; c < models.size(); ++c)
@@ -510,7 +519,6 @@ namespace FuzzyContact
   FuzzyContactModel::full_order(const std::vector<double> &values)
   {
     check_values(values);
-    ++n_full;
     const Scene changed = fuzzy.apply(scene, values);
     for (unsigned int c = 0; c < components.size(); ++c)
       {
@@ -576,18 +584,6 @@ namespace FuzzyContact
   }
 
 
-  unsigned long
-  FuzzyContactModel::n_reduced_evaluations() const
-  {
-    return n_reduced;
-  }
-
-  unsigned long
-  FuzzyContactModel::n_full_order_evaluations() const
-  {
-    return n_full;
-  }
-
   std::vector<unsigned int>
   FuzzyContactModel::n_dofs() const
   {
@@ -597,14 +593,6 @@ namespace FuzzyContact
     return n;
   }
 
-  std::vector<unsigned int>
-  FuzzyContactModel::reduced_sizes() const
-  {
-    std::vector<unsigned int> n;
-    for (const ComponentModel &m : models)
-      n.push_back(m.reduced->size());
-    return n;
-  }
 
   std::vector<unsigned int>
   FuzzyContactModel::reanalysis_orders() const
@@ -613,12 +601,6 @@ namespace FuzzyContact
     for (const ComponentModel &m : models)
       n.push_back(m.reanalysis ? m.reanalysis->order() : 0);
     return n;
-  }
-
-  Point<2>
-  FuzzyContactModel::slave_node() const
-  {
-    return report.slave.position;
   }
 
 

@@ -22,6 +22,7 @@
 
 #include <gtest/gtest.h>
 
+#include "test_utilities.h"
 #include <cmath>
 #include <fstream>
 #include <memory>
@@ -29,10 +30,10 @@
 #include <sstream>
 
 using namespace FuzzyContact;
+using namespace FuzzyContact::Testing;
 
 namespace
 {
-  const std::string source_dir = FUZZYCONTACT_SOURCE_DIR;
 
   std::string
   scene_text(const std::string &name)
@@ -40,32 +41,6 @@ namespace
     return Input::read_text_file(source_dir + "/prm/" + name + ".prm");
   }
 
-  std::string
-  replace(std::string text, const std::string &from, const std::string &to)
-  {
-    const auto pos = text.find(from);
-    EXPECT_NE(pos, std::string::npos)
-      << "test setup: <" << from << "> not found";
-    if (pos != std::string::npos)
-      text.replace(pos, from.size(), to);
-    return text;
-  }
-
-  // The message of an exception thrown by @p f ("" if none).
-  template <typename F>
-  std::string
-  error_of(const F &f)
-  {
-    try
-      {
-        f();
-      }
-    catch (const dealii::ExceptionBase &e)
-      {
-        return Input::message_of(e);
-      }
-    return "";
-  }
 
   // A scene with its components and contact interface.
   struct Bodies

@@ -13,16 +13,17 @@
 
 #include <gtest/gtest.h>
 
+#include "test_utilities.h"
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 
 using namespace FuzzyContact;
+using namespace FuzzyContact::Testing;
 
 namespace
 {
-  const std::string source_dir = FUZZYCONTACT_SOURCE_DIR;
 
   // A one-beam scene; tests replace parts of it to make it wrong.
   const std::string cantilever_scene = R"(
@@ -45,16 +46,6 @@ subsection Component beam
 end
 )";
 
-  std::string
-  replace(std::string text, const std::string &from, const std::string &to)
-  {
-    const auto pos = text.find(from);
-    EXPECT_NE(pos, std::string::npos)
-      << "test setup: <" << from << "> not found";
-    if (pos != std::string::npos)
-      text.replace(pos, from.size(), to);
-    return text;
-  }
 
   // The message of the exception that reading @p text throws ("" if none).
   std::string

@@ -11,27 +11,15 @@
 
 #include <gtest/gtest.h>
 
+#include "test_utilities.h"
 #include <cmath>
 
 using namespace FuzzyContact;
+using namespace FuzzyContact::Testing;
 
 namespace
 {
-  const std::string source_dir = FUZZYCONTACT_SOURCE_DIR;
 
-  std::string
-  error_of(const std::function<void()> &f)
-  {
-    try
-      {
-        f();
-      }
-    catch (const dealii::ExceptionBase &e)
-      {
-        return Input::message_of(e);
-      }
-    return "";
-  }
 
   // The fuzzy parameters of a step file's text, bound to @p scene.
   FuzzyParameterSet

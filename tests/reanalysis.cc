@@ -22,6 +22,7 @@
 
 #include <gtest/gtest.h>
 
+#include "test_utilities.h"
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -31,26 +32,11 @@
 #include <random>
 
 using namespace FuzzyContact;
+using namespace FuzzyContact::Testing;
 
 namespace
 {
-  const std::string source_dir = FUZZYCONTACT_SOURCE_DIR;
 
-  // The message of the exception that f throws ("" if none).
-  template <typename F>
-  std::string
-  error_of(const F &f)
-  {
-    try
-      {
-        f();
-      }
-    catch (const dealii::ExceptionBase &e)
-      {
-        return Input::message_of(e);
-      }
-    return "";
-  }
 
   double
   m_norm(const SparseMatrix<double> &M, const Vector<double> &v)

@@ -128,11 +128,6 @@ namespace FuzzyContact
     void
     set_reuse_factorisations(const bool reuse);
 
-    /** Evaluations so far (reduced, full order). */
-    unsigned long
-    n_reduced_evaluations() const;
-    unsigned long
-    n_full_order_evaluations() const;
 
     /** A few lines on what the model is: meshes, bases, report node. */
     std::string
@@ -141,15 +136,11 @@ namespace FuzzyContact
     /** DoFs of each component. */
     std::vector<unsigned int>
     n_dofs() const;
-    /** Columns of each component's reduced basis (modes + corrections). */
-    std::vector<unsigned int>
-    reduced_sizes() const;
+
     /** HPTP order used for each component (0: exact scaling or none). */
     std::vector<unsigned int>
     reanalysis_orders() const;
-    /** Position of the report's slave node. */
-    Point<2>
-    slave_node() const;
+
 
   private:
     // How a component's parameters enter the reduced model.
@@ -212,8 +203,7 @@ namespace FuzzyContact
     double                            nominal_gap = 0;
     // Index of the fuzzy load, friction and gap parameters (-1: none).
     int    load_parameter = -1, friction_parameter = -1, gap_parameter = -1;
-    double nominal_load     = 0;
-    unsigned long n_reduced = 0, n_full = 0;
+    double nominal_load = 0;
   };
 } // namespace FuzzyContact
 
