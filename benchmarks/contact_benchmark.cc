@@ -17,17 +17,17 @@
 // prints Markdown tables (doc/contact.md holds a copy) and writes them to
 // contact_benchmark.md.
 
-#include <fuzzycontact/active_set_solver.h>
-#include <fuzzycontact/component.h>
-#include <fuzzycontact/contact_interface.h>
-#include <fuzzycontact/contact_problem.h>
-#include <fuzzycontact/fl2c.h>
-#include <fuzzycontact/full_order_contact.h>
-#include <fuzzycontact/input.h>
-#include <fuzzycontact/modal_solver.h>
-#include <fuzzycontact/output.h>
-#include <fuzzycontact/reduced_model.h>
-#include <fuzzycontact/scene.h>
+#include <fuzzycontact/base/input.h>
+#include <fuzzycontact/contact/active_set_solver.h>
+#include <fuzzycontact/contact/contact_interface.h>
+#include <fuzzycontact/contact/contact_problem.h>
+#include <fuzzycontact/contact/fl2c.h>
+#include <fuzzycontact/contact/full_order_contact.h>
+#include <fuzzycontact/fe/component.h>
+#include <fuzzycontact/modal/modal_solver.h>
+#include <fuzzycontact/output/output_files.h>
+#include <fuzzycontact/reduction/reduced_model.h>
+#include <fuzzycontact/scene/scene.h>
 
 #include <deal.II/base/timer.h>
 

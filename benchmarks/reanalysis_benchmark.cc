@@ -15,13 +15,13 @@
 // several samples; the exact re-solve is timed from forming K(t), M(t) to
 // the 9 modes (UMFPACK factorisation + ARPACK).
 
-#include <fuzzycontact/component.h>
-#include <fuzzycontact/modal_reanalysis.h>
-#include <fuzzycontact/modal_solver.h>
-#include <fuzzycontact/mode_comparison.h>
-#include <fuzzycontact/parameter_independent_reanalysis.h>
-#include <fuzzycontact/reanalysis_parameters.h>
-#include <fuzzycontact/scene.h>
+#include <fuzzycontact/fe/component.h>
+#include <fuzzycontact/modal/modal_solver.h>
+#include <fuzzycontact/modal/mode_comparison.h>
+#include <fuzzycontact/reanalysis/modal_reanalysis.h>
+#include <fuzzycontact/reanalysis/parameter_independent_reanalysis.h>
+#include <fuzzycontact/reanalysis/reanalysis_parameters.h>
+#include <fuzzycontact/scene/scene.h>
 
 #include <deal.II/base/multithread_info.h>
 #include <deal.II/base/timer.h>

@@ -6,19 +6,19 @@
 // from small matrices), and the hard and bad cases. All on the 1510-DoF
 // meshes (a few on 5418), so that the whole file runs in seconds.
 
-#include <fuzzycontact/active_set_solver.h>
-#include <fuzzycontact/beam_theory.h>
-#include <fuzzycontact/component.h>
-#include <fuzzycontact/contact_interface.h>
-#include <fuzzycontact/contact_problem.h>
-#include <fuzzycontact/fl2c.h>
-#include <fuzzycontact/full_order_contact.h>
-#include <fuzzycontact/fuzzy_regulator.h>
-#include <fuzzycontact/input.h>
-#include <fuzzycontact/modal_solver.h>
-#include <fuzzycontact/reduced_model.h>
-#include <fuzzycontact/scene.h>
-#include <fuzzycontact/sparse_direct_solver.h>
+#include <fuzzycontact/base/input.h>
+#include <fuzzycontact/base/sparse_direct_solver.h>
+#include <fuzzycontact/contact/active_set_solver.h>
+#include <fuzzycontact/contact/contact_interface.h>
+#include <fuzzycontact/contact/contact_problem.h>
+#include <fuzzycontact/contact/fl2c.h>
+#include <fuzzycontact/contact/full_order_contact.h>
+#include <fuzzycontact/contact/fuzzy_regulator.h>
+#include <fuzzycontact/fe/beam_theory.h>
+#include <fuzzycontact/fe/component.h>
+#include <fuzzycontact/modal/modal_solver.h>
+#include <fuzzycontact/reduction/reduced_model.h>
+#include <fuzzycontact/scene/scene.h>
 
 #include <gtest/gtest.h>
 

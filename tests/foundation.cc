@@ -2,12 +2,12 @@
 // rejection of bad ones), component assembly, and the modal solver, each
 // against an independent value.
 
-#include <fuzzycontact/beam_theory.h>
-#include <fuzzycontact/component.h>
-#include <fuzzycontact/input.h>
-#include <fuzzycontact/modal_solver.h>
-#include <fuzzycontact/output.h>
-#include <fuzzycontact/scene.h>
+#include <fuzzycontact/base/input.h>
+#include <fuzzycontact/fe/beam_theory.h>
+#include <fuzzycontact/fe/component.h>
+#include <fuzzycontact/modal/modal_solver.h>
+#include <fuzzycontact/output/output_files.h>
+#include <fuzzycontact/scene/scene.h>
 
 #include <deal.II/lac/lapack_full_matrix.h>
 

@@ -2,12 +2,12 @@
 // parameters bound to scene quantities, and the three interval methods,
 // against interval bounds known in closed form.
 
-#include <fuzzycontact/fuzzy_number.h>
-#include <fuzzycontact/fuzzy_parameters.h>
-#include <fuzzycontact/input.h>
-#include <fuzzycontact/interval_analysis.h>
-#include <fuzzycontact/scene.h>
-#include <fuzzycontact/scene_quantity.h>
+#include <fuzzycontact/base/input.h>
+#include <fuzzycontact/fuzzy/fuzzy_number.h>
+#include <fuzzycontact/fuzzy/fuzzy_parameters.h>
+#include <fuzzycontact/fuzzy/interval_analysis.h>
+#include <fuzzycontact/scene/scene.h>
+#include <fuzzycontact/scene/scene_quantity.h>
 
 #include <gtest/gtest.h>
 
@@ -387,7 +387,7 @@ TEST(IntervalMethods, CacheCountsDistinctEvaluations)
 // The fuzzy contact model: reduced pipeline against the exact solver
 // ----------------------------------------------------------------------------
 
-#include <fuzzycontact/fuzzy_contact_model.h>
+#include <fuzzycontact/study/fuzzy_contact_model.h>
 
 namespace
 {

@@ -6,16 +6,16 @@
 // min-max ordering of Ritz values on nested bases). Meshes stay at 1.5k DoFs
 // (0.02 s per ARPACK solve); speed is measured by the benchmark, not here.
 
-#include <fuzzycontact/component.h>
-#include <fuzzycontact/eigen_derivatives.h>
-#include <fuzzycontact/input.h>
-#include <fuzzycontact/modal_reanalysis.h>
-#include <fuzzycontact/modal_solver.h>
-#include <fuzzycontact/mode_comparison.h>
-#include <fuzzycontact/parameter_independent_reanalysis.h>
-#include <fuzzycontact/reanalysis_parameters.h>
-#include <fuzzycontact/reduced_basis.h>
-#include <fuzzycontact/scene.h>
+#include <fuzzycontact/base/input.h>
+#include <fuzzycontact/fe/component.h>
+#include <fuzzycontact/modal/modal_solver.h>
+#include <fuzzycontact/modal/mode_comparison.h>
+#include <fuzzycontact/reanalysis/eigen_derivatives.h>
+#include <fuzzycontact/reanalysis/modal_reanalysis.h>
+#include <fuzzycontact/reanalysis/parameter_independent_reanalysis.h>
+#include <fuzzycontact/reanalysis/reanalysis_parameters.h>
+#include <fuzzycontact/reanalysis/reduced_basis.h>
+#include <fuzzycontact/scene/scene.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/lapack_full_matrix.h>

@@ -3,7 +3,7 @@
 #ifndef fuzzycontact_tests_test_utilities_h
 #define fuzzycontact_tests_test_utilities_h
 
-#include <fuzzycontact/input.h>
+#include <fuzzycontact/base/input.h>
 
 #include <deal.II/base/exceptions.h>
 

@@ -15,12 +15,13 @@
 //
 // Usage: step-1 prm/step-1.prm
 
-#include <fuzzycontact/beam_theory.h>
-#include <fuzzycontact/component.h>
-#include <fuzzycontact/input.h>
-#include <fuzzycontact/modal_solver.h>
-#include <fuzzycontact/output.h>
-#include <fuzzycontact/scene.h>
+#include <fuzzycontact/base/input.h>
+#include <fuzzycontact/base/program.h>
+#include <fuzzycontact/fe/beam_theory.h>
+#include <fuzzycontact/fe/component.h>
+#include <fuzzycontact/modal/modal_solver.h>
+#include <fuzzycontact/output/output_files.h>
+#include <fuzzycontact/scene/scene.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>

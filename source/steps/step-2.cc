@@ -24,15 +24,16 @@
 //
 // Usage: step-2 prm/step-2.prm
 
-#include <fuzzycontact/component.h>
-#include <fuzzycontact/input.h>
-#include <fuzzycontact/modal_reanalysis.h>
-#include <fuzzycontact/modal_solver.h>
-#include <fuzzycontact/mode_comparison.h>
-#include <fuzzycontact/output.h>
-#include <fuzzycontact/parameter_independent_reanalysis.h>
-#include <fuzzycontact/reanalysis_parameters.h>
-#include <fuzzycontact/scene.h>
+#include <fuzzycontact/base/input.h>
+#include <fuzzycontact/base/program.h>
+#include <fuzzycontact/fe/component.h>
+#include <fuzzycontact/modal/modal_solver.h>
+#include <fuzzycontact/modal/mode_comparison.h>
+#include <fuzzycontact/output/output_files.h>
+#include <fuzzycontact/reanalysis/modal_reanalysis.h>
+#include <fuzzycontact/reanalysis/parameter_independent_reanalysis.h>
+#include <fuzzycontact/reanalysis/reanalysis_parameters.h>
+#include <fuzzycontact/scene/scene.h>
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>

@@ -20,18 +20,19 @@
 //
 // Usage: step-3 prm/step-3.prm
 
-#include <fuzzycontact/active_set_solver.h>
-#include <fuzzycontact/beam_theory.h>
-#include <fuzzycontact/component.h>
-#include <fuzzycontact/contact_interface.h>
-#include <fuzzycontact/contact_problem.h>
-#include <fuzzycontact/fl2c.h>
-#include <fuzzycontact/full_order_contact.h>
-#include <fuzzycontact/input.h>
-#include <fuzzycontact/modal_solver.h>
-#include <fuzzycontact/output.h>
-#include <fuzzycontact/reduced_model.h>
-#include <fuzzycontact/scene.h>
+#include <fuzzycontact/base/input.h>
+#include <fuzzycontact/base/program.h>
+#include <fuzzycontact/contact/active_set_solver.h>
+#include <fuzzycontact/contact/contact_interface.h>
+#include <fuzzycontact/contact/contact_problem.h>
+#include <fuzzycontact/contact/fl2c.h>
+#include <fuzzycontact/contact/full_order_contact.h>
+#include <fuzzycontact/fe/beam_theory.h>
+#include <fuzzycontact/fe/component.h>
+#include <fuzzycontact/modal/modal_solver.h>
+#include <fuzzycontact/output/output_files.h>
+#include <fuzzycontact/reduction/reduced_model.h>
+#include <fuzzycontact/scene/scene.h>
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>

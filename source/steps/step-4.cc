@@ -27,14 +27,15 @@
 //
 // Usage: step-4 prm/step-4.prm
 
-#include <fuzzycontact/fuzzy_contact_model.h>
-#include <fuzzycontact/fuzzy_number.h>
-#include <fuzzycontact/fuzzy_parameters.h>
-#include <fuzzycontact/input.h>
-#include <fuzzycontact/interval_analysis.h>
-#include <fuzzycontact/membership_plot.h>
-#include <fuzzycontact/output.h>
-#include <fuzzycontact/scene.h>
+#include <fuzzycontact/base/input.h>
+#include <fuzzycontact/base/program.h>
+#include <fuzzycontact/fuzzy/fuzzy_number.h>
+#include <fuzzycontact/fuzzy/fuzzy_parameters.h>
+#include <fuzzycontact/fuzzy/interval_analysis.h>
+#include <fuzzycontact/output/membership_plot.h>
+#include <fuzzycontact/output/output_files.h>
+#include <fuzzycontact/scene/scene.h>
+#include <fuzzycontact/study/fuzzy_contact_model.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>

@@ -1,0 +1,115 @@
+// The exact solver of one load step of the contact problem (see
+// contact_problem.h), in two phases.
+//
+// 1. Start (only when no node is closed yet, i.e. without a warm start):
+//    the frictionless normal problem, which is the convex quadratic program
+//    min 1/2 p_n^T W_nn p_n + g_free,n^T p_n subject to p_n >= 0, solved by
+//    the primal active set method of Lawson and Hanson (NNLS): close the
+//    most penetrating open node, solve on the closed set, step back to the
+//    boundary and open nodes whose force would turn negative, repeat. It
+//    terminates in finitely many steps whatever W (no cycling) and, when
+//    few nodes end up closed, in few steps. It matters on the `stacked`
+//    scene: there the free solution penetrates at every node while the
+//    answer has two closed nodes, and the primal-dual method started from
+//    "all penetrating nodes closed" peels them off a few per iteration.
+//
+// 2. The primal-dual active set method, i.e. the semismooth Newton method
+//    of Hueber, Stadler and Wohlmuth (2008) for Signorini's conditions with
+//    Coulomb friction, from the statuses of phase 1 (closed nodes stick) or
+//    of a warm start. In 2D the tangential direction is a sign, so for a
+//    fixed status of every node the conditions are linear:
+//
+//      open:  p_n = 0, p_t = 0;
+//      stick: g_n = 0, g_t = g_t,previous;
+//      slip:  g_n = 0, p_t = mu s p_n (s = +1 or -1).
+//
+//    Each iteration solves that linear system on the closed nodes only (a
+//    dense LU factorisation of W restricted to the closed rows, slip
+//    columns folded in), then predicts a new status from the complementarity
+//    functions: closed if p_n - c_n g_n > 0, then stick if |p_t - c_t dg_t|
+//    < mu (p_n - c_n g_n), else slip in the direction of p_t - c_t dg_t. A
+//    node whose own residual is already below the tolerance keeps its
+//    status: weakly complementary nodes (g_n = 0 and p_n = 0 at once, as
+//    along the interface of `stacked`) then do not flip on round-off.
+//
+// The method stops when the relative complementarity residual is at most
+// the tolerance (default 1e-10), and nowhere else: if a status repeats (a
+// cycle), it switches to Murty's least-index rule, which changes only the
+// violated node of least index per iteration and terminates for P-matrices
+// (frictionless contact with W positive definite); if that cycles too, or
+// max_iterations pass, it throws with the iteration count and the residual
+// reached. A numerically singular active system (a reduced W of low rank)
+// is solved in the least-squares sense with a pseudo-inverse.
+
+#ifndef fuzzycontact_contact_active_set_solver_h
+#define fuzzycontact_contact_active_set_solver_h
+
+#include <fuzzycontact/contact/contact_problem.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace FuzzyContact
+{
+  struct ActiveSetParameters
+  {
+    /** Relative complementarity residual at which the method stops. */
+    double tolerance = 1e-10;
+    /** Iterations per load step (both phases) before it gives up. */
+    unsigned int max_iterations = 200;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  class ActiveSetSolver
+  {
+  public:
+    explicit ActiveSetSolver(const ActiveSetParameters &parameters = {});
+
+    /**
+     * Solves one load step with flexibility @p W, free gaps
+     * @p step.g_free, previous gaps @p step.g_previous and friction
+     * coefficients @p mu, starting from the statuses of @p step.previous
+     * if any node is closed there (a warm start), else from phase 1.
+     * @p what names the solver in messages.
+     */
+    ContactState
+    solve(FlexibilityOperator       &W,
+          const LoadStep            &step,
+          const std::vector<double> &mu,
+          const std::string         &what) const;
+
+    /** All load steps of a ContactProblem. */
+    ContactState
+    solve(const ContactProblem &problem,
+          const double          load_factor,
+          const unsigned int    n_load_steps,
+          const std::string    &what) const;
+
+    /**
+     * For the statuses of @p state, the change of the forces that removes
+     * the constraint violations @p violation (per row: g_n of closed nodes,
+     * g_t - g_t,previous of sticking nodes; other rows are ignored), i.e.
+     * the solution of the same linear system as in an iteration with the
+     * right-hand side -violation. Used to refine a solution whose gaps were
+     * recomputed more accurately than W is known.
+     */
+    Vector<double>
+    correction(FlexibilityOperator       &W,
+               const ContactState        &state,
+               const std::vector<double> &mu,
+               const Vector<double>      &violation) const;
+
+    const ActiveSetParameters &
+    parameters() const;
+
+  private:
+    ActiveSetParameters parameters_;
+  };
+} // namespace FuzzyContact
+
+#endif

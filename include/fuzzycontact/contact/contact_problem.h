@@ -1,0 +1,253 @@
+// The discrete contact problem that every solver of FuzzyContact solves, and
+// the result they all return.
+//
+// Whatever model the displacements come from (the full finite element
+// systems, or component modes with or without static correction), with the
+// contact forces p (two per slave node k: p_n = p[2k] >= 0 in compression
+// and p_t = p[2k+1] along the tangent), the gaps are affine in p:
+//
+//     g(p) = g_initial + lambda g_load + W p,
+//
+// with W = C K^{-1} C^T the contact flexibility [m/N] (symmetric positive
+// semi-definite), g_initial the gaps of the unloaded bodies (normal rows:
+// g0, tangential rows: 0) and g_load the change of the gaps under the
+// external load at load factor 1 without contact forces. The conditions
+// at node k are Signorini and Coulomb's law:
+//
+//     g_n >= 0,  p_n >= 0,  g_n p_n = 0,
+//     |p_t| <= mu p_n,  stick (dg_t = 0) where |p_t| < mu p_n,
+//     slip where |p_t| = mu p_n, with dg_t p_t <= 0 (the friction force
+//     opposes the slip).
+//
+// The load is applied proportionally in n_load_steps equal steps (lambda =
+// 1/n, 2/n, ..., 1). Friction depends on the path, so each step solves the
+// incremental problem in which dg_t = g_t - g_t,previous is the tangential
+// displacement since the converged previous step (g_t,previous = 0 before
+// the first step). All solvers solve exactly this discrete problem, so that
+// their differences measure only the error of the model (W, g_load) and the
+// error of the algorithm.
+//
+// The complementarity residual of a state is measured with the natural
+// nonlinear complementarity functions (Hueber, Stadler and Wohlmuth 2008)
+//
+//     phi_n = p_n - max(0, p_n - c_n g_n),
+//     phi_t = p_t - proj_[-mu a, mu a](p_t - c_t dg_t),  a = max(0, p_n - c_n
+//     g_n),
+//
+// with c_n = 1 / W_nn and c_t = 1 / W_tt of the node (they turn a gap into
+// the force that would close it), as max_k (|phi_n| + |phi_t|) divided by
+// the force scale max(sum_k p_n, max_k c_n |g_free,n|). It is zero exactly at
+// a solution, and independent of the units.
+
+#ifndef fuzzycontact_contact_contact_problem_h
+#define fuzzycontact_contact_contact_problem_h
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace FuzzyContact
+{
+  using namespace dealii;
+
+  enum class ContactStatus
+  {
+    open,
+    stick,
+    slip
+  };
+
+  std::string
+  to_string(ContactStatus status);
+
+  /** Row of the normal and of the tangential gap of node k. */
+  inline unsigned int
+  normal_row(const unsigned int k)
+  {
+    return 2 * k;
+  }
+  inline unsigned int
+  tangential_row(const unsigned int k)
+  {
+    return 2 * k + 1;
+  }
+
+  /**
+   * Access to the contact flexibility W, which a solver may only need in
+   * part: the full-order solver computes a column of W only when the
+   * active set first needs it (two sparse back-substitutions), the reduced
+   * models hold W as a dense matrix.
+   */
+  class FlexibilityOperator
+  {
+  public:
+    virtual ~FlexibilityOperator() = default;
+    /** Number of rows and columns (twice the number of slave nodes). */
+    virtual unsigned int
+    size() const = 0;
+    /** Makes the given columns available (computing them if needed). */
+    virtual void
+    prepare(const std::vector<unsigned int> &columns) = 0;
+    /** W(i, j); column j must have been prepared. */
+    virtual double
+    operator()(const unsigned int i, const unsigned int j) const = 0;
+  };
+
+  /** A FlexibilityOperator that holds W as a dense matrix. */
+  class DenseFlexibility : public FlexibilityOperator
+  {
+  public:
+    explicit DenseFlexibility(const FullMatrix<double> &W);
+    unsigned int
+    size() const override;
+    void
+    prepare(const std::vector<unsigned int> &columns) override;
+    double
+    operator()(const unsigned int i, const unsigned int j) const override;
+
+  private:
+    const FullMatrix<double> &W;
+  };
+
+  /**
+   * A contact problem of small dense size: the reduced problem (or the full
+   * one, once its W is known). It does not care how W and the gaps were
+   * obtained.
+   */
+  struct ContactProblem
+  {
+    /** Contact flexibility [m/N], n_rows x n_rows, symmetric. */
+    FullMatrix<double> W;
+    /** Gaps without load and contact forces (normal rows: g0). */
+    Vector<double> g_initial;
+    /** Change of the gaps under the external load at load factor 1. */
+    Vector<double> g_load;
+    /** Friction coefficient of every node. */
+    std::vector<double> mu;
+
+    unsigned int
+    n_nodes() const;
+    unsigned int
+    n_rows() const;
+    /** g_initial + lambda g_load. */
+    Vector<double>
+    free_gaps(const double load_factor) const;
+    /** Adds @p offset to every initial normal gap. */
+    void
+    shift_gaps(const double offset);
+    /** The same coefficient for every node (>= 0). */
+    void
+    set_friction_coefficient(const double mu);
+    /** Throws if sizes disagree or an entry is not finite. */
+    void
+    check() const;
+  };
+
+  /**
+   * What one load step of a solver returns: forces, gaps and statuses, and
+   * how the solver got there.
+   */
+  struct ContactState
+  {
+    Vector<double>             p;
+    Vector<double>             g;
+    std::vector<ContactStatus> status;
+    /** +1 or -1: direction of the friction force of slipping nodes. */
+    std::vector<int> slip_sign;
+    unsigned int     iterations = 0;
+    double           residual   = 0;
+  };
+
+  /** Everything a load step needs to know. */
+  struct LoadStep
+  {
+    unsigned int step; // 1, ..., n_steps
+    double       load_factor;
+    /** g_initial + load_factor g_load. */
+    Vector<double> g_free;
+    /** Gaps at the end of the previous step (tangential rows: the
+     * reference of the slip increment); zero before the first step. */
+    Vector<double> g_previous;
+    /** The converged state of the previous step (all open at first). */
+    ContactState previous;
+  };
+
+  /**
+   * Applies the load in @p n_steps equal increments up to @p load_factor,
+   * calling @p solve_step for each; returns the last state with the
+   * iterations summed over all steps and the largest residual.
+   */
+  ContactState
+  solve_in_load_steps(
+    const Vector<double>                                &g_initial,
+    const Vector<double>                                &g_load,
+    const double                                         load_factor,
+    const unsigned int                                   n_steps,
+    const std::function<ContactState(const LoadStep &)> &solve_step);
+
+  /**
+   * Per-node residuals |phi_n| + |phi_t| (see the top of this file) of the
+   * forces @p p with gaps @p g at a load step whose previous gaps are
+   * @p g_previous. @p c_n and @p c_t give the scaling of node k; they are
+   * only called for nodes where they matter (closed or penetrating ones).
+   */
+  std::vector<double>
+  complementarity_residuals(const Vector<double>      &p,
+                            const Vector<double>      &g,
+                            const Vector<double>      &g_previous,
+                            const std::vector<double> &mu,
+                            const std::function<double(unsigned int)> &c_n,
+                            const std::function<double(unsigned int)> &c_t);
+
+  /** The force scale of the relative residual (see the top of this file). */
+  double
+  residual_scale(const Vector<double>                      &p,
+                 const Vector<double>                      &g_free,
+                 const std::function<double(unsigned int)> &c_n);
+
+  /**
+   * The result of a contact solver: per slave node the forces, gaps and
+   * statuses; the total forces; the displacements of the report nodes;
+   * and what it cost.
+   */
+  struct ContactSolution
+  {
+    std::string solver;
+    /** Forces (2 per node), gaps g = g0 + C u (2 per node). */
+    Vector<double>             p;
+    Vector<double>             g;
+    std::vector<ContactStatus> status;
+    /** sum_k p_n and sum_k p_t [N]. */
+    double normal_force     = 0;
+    double tangential_force = 0;
+    /** (u_x, u_y) of the report's slave node and of its two master nodes. */
+    std::array<double, 2>                slave_displacement{{0, 0}};
+    std::array<std::array<double, 2>, 2> master_displacements{{{{0, 0}}}};
+    unsigned int                         iterations   = 0;
+    unsigned int                         n_load_steps = 1;
+    /** Relative complementarity residual of the final state. */
+    double residual = 0;
+    /** Wall time of the solve [s] (see each solver for what it covers). */
+    double time = 0;
+    /** Displacements of every component, if the solver computed them. */
+    std::vector<Vector<double>> displacements;
+
+    double
+    p_n(const unsigned int k) const;
+    double
+    p_t(const unsigned int k) const;
+    unsigned int
+    n_nodes() const;
+    unsigned int
+    count(const ContactStatus s) const;
+    /** Fills status-derived totals from p. */
+    void
+    compute_totals();
+  };
+} // namespace FuzzyContact
+
+#endif

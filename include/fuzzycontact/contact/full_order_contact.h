@@ -1,0 +1,179 @@
+// The full-order reference: the frictional contact of the components' full
+// finite element systems, solved exactly. It plays the part of the
+// commercial code of the 2013 paper, and it is the exact solver of the
+// Extension Principle in the fuzzy study, so each solve is made as cheap
+// as it can be without giving up exactness.
+//
+// With Lagrange multipliers p (contact forces) the saddle-point system is
+//
+//     K_c u_c = lambda f_c + C_c^T p   for every component c,
+//     g = g0 + sum_c C_c u_c,          Signorini + Coulomb on (g, p).
+//
+// It is solved by block elimination: every K_c is factorised once by
+// UMFPACK (sparse LU, SparseDirectSolver), and the primal-dual active set
+// method (ActiveSetSolver) works on the Schur complement W = sum_c C_c K_c^{-1}
+// C_c^T, whose columns are computed only when the active set first needs
+// them (one back-substitution per component touched) and kept. The
+// displacements then follow from one more back-substitution per component,
+// and the complementarity residual is evaluated on the gaps g0 + C u of
+// those displacements, not on W.
+//
+// What is reused, and when (all exact):
+//  - the factorisations, columns of W and free solutions K_c^{-1} f_c,
+//    across active set iterations, load steps and solves, while the
+//    stiffness does not change;
+//  - the same, after set_zone_materials() on a component has scaled all its
+//    zone moduli by one factor s (K_c = s K_c,ref, so K_c^{-1} =
+//    K_c,ref^{-1} / s): a change of E of a whole body costs no new
+//    factorisation;
+//  - the statuses of the previous solve, as the start of the next one, if
+//    warm starts are switched on (the answer does not depend on the start).
+// Any other change of a component's moduli triggers a new factorisation.
+//
+// The load factor, friction coefficients and initial gaps are read at each
+// solve: the load factor from this object, mu and the gaps (with their
+// offset) from the ContactInterface.
+
+#ifndef fuzzycontact_contact_full_order_contact_h
+#define fuzzycontact_contact_full_order_contact_h
+
+#include <fuzzycontact/base/sparse_direct_solver.h>
+#include <fuzzycontact/contact/active_set_solver.h>
+#include <fuzzycontact/contact/contact_interface.h>
+#include <fuzzycontact/contact/contact_problem.h>
+#include <fuzzycontact/fe/component.h>
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace FuzzyContact
+{
+  class FullOrderContact
+  {
+  public:
+    /**
+     * @p components: one per scene component, in scene order (the objects
+     * must outlive this one; their moduli may change between solves).
+     */
+    FullOrderContact(
+      const std::vector<const Component *> &components,
+      const ContactInterface               &interface,
+      const ActiveSetParameters            &parameters = ActiveSetParameters());
+
+    /** Multiplies every component's declared loads (default 1). */
+    void
+    set_load_factor(const double load_factor);
+    double
+    load_factor() const;
+    /** Proportional load steps (default 1). */
+    void
+    set_n_load_steps(const unsigned int n_load_steps);
+    /** Start each solve from the statuses of the previous one. */
+    void
+    set_warm_start(const bool warm_start);
+
+    /**
+     * With @p fields = false, solve() does not compute the displacement
+     * fields: the forces come from the active set solution on W (whose
+     * columns carry the accuracy of a plain back-substitution, about 1e-9
+     * relative on fine meshes), the residual is measured on W's gaps, and
+     * the report nodes' displacements are combined from the free solutions
+     * and the columns kept at those DoFs. No back-substitution is needed
+     * once the columns exist, which makes repeated solves (the Extension
+     * Principle's thousands of samples) cheap. Default: true.
+     */
+    void
+    set_displacement_fields(const bool fields);
+
+    /**
+     * Solves the contact problem for the current stiffness, load factor,
+     * friction coefficients and gaps. The displacements of @p report (if
+     * given) and the full displacement fields go into the solution; its
+     * time covers everything the solve had to do (factorisations, columns
+     * of W, active set iterations, final displacements).
+     */
+    ContactSolution
+    solve(const ReportNodes *report = nullptr);
+
+    /**
+     * The whole contact flexibility W (every column computed); for tests
+     * and for comparison with reduced models.
+     */
+    FullMatrix<double>
+    flexibility();
+    /** g_load = C K^{-1} f at load factor 1. */
+    Vector<double>
+    load_gaps();
+
+    /** How many sparse LU factorisations and back-substitutions so far. */
+    unsigned int
+    n_factorizations() const;
+    unsigned int
+    n_back_substitutions() const;
+    /** Number of columns of W computed so far. */
+    unsigned int
+    n_columns() const;
+
+  private:
+    class Flexibility;
+
+    /** Factorises what changed; returns true if anything was refactorised. */
+    void
+    update_factorizations();
+    /** Makes W's column j available. */
+    void
+    prepare_column(const unsigned int j);
+    double
+    entry(const unsigned int i, const unsigned int j) const;
+    /** K_c^{-1} rhs with one step of extended-precision refinement. */
+    Vector<double>
+    accurate_solve(const unsigned int c, const Vector<double> &rhs);
+
+    std::vector<const Component *> components;
+    const ContactInterface        &interface;
+    ActiveSetSolver                solver;
+    double                         load_factor_  = 1;
+    unsigned int                   n_load_steps_ = 1;
+    bool                           warm_start_   = false;
+
+    // Per component: the factorisation of K_ref, the moduli it was made
+    // with, the current scale s (K = s K_ref), K_ref^{-1} f, and the
+    // columns C_c K_ref^{-1} C_c^T e_j computed so far.
+    struct Factorized
+    {
+      std::unique_ptr<SparseDirectSolver>          inverse;
+      std::vector<double>                          moduli;
+      double                                       scale = 1;
+      Vector<double>                               free_solution;
+      std::vector<std::unique_ptr<Vector<double>>> columns;
+      // K_c,ref^{-1} C_c^T e_j at the DoFs of observed_dofs, per column j.
+      std::vector<std::vector<double>> observed_columns;
+    };
+    // The DoFs of the report nodes, per component (set by solve()).
+    std::vector<std::vector<types::global_dof_index>> observed_dofs;
+    bool displacement_fields_ = true;
+
+    // Makes sure the columns kept at the report's DoFs exist: if the report
+    // changed, the columns are recomputed.
+    void
+    observe(const ReportNodes &report);
+    // The displacement of DoF @p dof of component @p c for forces @p p.
+    double
+                            observed_displacement(const unsigned int            c,
+                                                  const types::global_dof_index dof,
+                                                  const Vector<double>         &p);
+    std::vector<Factorized> factorized;
+    // Columns of W = sum_c (column of c) / s_c at the current scales.
+    std::vector<std::unique_ptr<Vector<double>>> columns;
+
+    std::optional<ContactState> last_state;
+    unsigned int                factorizations     = 0;
+    unsigned int                back_substitutions = 0;
+  };
+} // namespace FuzzyContact
+
+#endif

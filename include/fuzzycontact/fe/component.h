@@ -1,0 +1,189 @@
+// One 2D linear-elastic component: its mesh, its degrees of freedom, its
+// clamps, and the stiffness and mass matrices split by material zone,
+//
+//     K = sum_z E_z K_z,     M = sum_z rho_z M_z,
+//
+// where K_z, M_z are assembled once with unit modulus and unit density over
+// the cells of zone z. The derivatives dK/dE_z = K_z and dM/drho_z = M_z are
+// then exact matrices, and a new set of moduli or densities costs a few
+// sparse matrix additions instead of an assembly.
+//
+// Clamped degrees of freedom are eliminated through AffineConstraints. Their
+// rows and columns in K and K_z are empty but for a positive diagonal entry
+// (so that K stays invertible), and their rows in M and M_z are zero, so
+// that they carry no mass: in K phi = lambda M phi they have infinite
+// eigenvalues and never appear among the computed modes.
+
+#ifndef fuzzycontact_fe_component_h
+#define fuzzycontact_fe_component_h
+
+#include <fuzzycontact/scene/scene.h>
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <string>
+#include <vector>
+
+namespace FuzzyContact
+{
+  using namespace dealii;
+
+  /**
+   * Stress from strain for a 2D model with Young's modulus @p E and Poisson's
+   * ratio @p nu: sigma = lambda tr(eps) I + 2 mu eps with the plane-stress
+   * or plane-strain value of lambda.
+   */
+  SymmetricTensor<4, 2>
+  elasticity_tensor(const PlaneModel model, const double E, const double nu);
+
+  class Component
+  {
+  public:
+    /**
+     * Builds the mesh (the description's subdivisions, refined globally
+     * @p n_refinements times), the DoFs and the clamp constraints, and
+     * assembles all matrices and the load vector. Throws if the zones do
+     * not tile the mesh. If @p timer is given, the stages "mesh and DoFs"
+     * and "assembly" are timed in it.
+     */
+    Component(const ComponentDescription &description,
+              const PlaneModel            plane_model,
+              const unsigned int          n_refinements = 0,
+              TimerOutput                *timer         = nullptr);
+
+    const std::string &
+    name() const;
+    const ComponentDescription &
+    description() const;
+    PlaneModel
+    plane_model() const;
+
+    unsigned int
+    n_dofs() const;
+    const Triangulation<2> &
+    triangulation() const;
+    const DoFHandler<2> &
+    dof_handler() const;
+    const FESystem<2> &
+    fe() const;
+    const AffineConstraints<double> &
+    constraints() const;
+    /** True for DoFs fixed by a clamp. */
+    bool
+    is_constrained(const types::global_dof_index dof) const;
+
+    unsigned int
+    n_zones() const;
+    const SparseMatrix<double> &
+    zone_stiffness_matrix(const unsigned int zone) const;
+    const SparseMatrix<double> &
+    zone_mass_matrix(const unsigned int zone) const;
+
+    /** Young's modulus and density of each zone as currently set. */
+    const std::vector<double> &
+    zone_moduli() const;
+    const std::vector<double> &
+    zone_densities() const;
+
+    /**
+     * New zone moduli and densities (one value per zone, all finite and
+     * positive). K and M are re-formed from the zone matrices when they are
+     * next used, so that a caller who only reads zone_moduli() (a solver
+     * that reuses a factorisation of a scaled stiffness) pays nothing.
+     */
+    void
+    set_zone_materials(const std::vector<double> &moduli,
+                       const std::vector<double> &densities);
+
+    const SparseMatrix<double> &
+    stiffness_matrix() const;
+    const SparseMatrix<double> &
+    mass_matrix() const;
+    const SparsityPattern &
+    sparsity_pattern() const;
+
+    /**
+     * Consistent nodal forces of all the component's edge loads at their
+     * declared total force.
+     */
+    const Vector<double> &
+    load_vector() const;
+    /** Nodal forces of load @p l for a total force of 1 N. */
+    const Vector<double> &
+    unit_load_vector(const unsigned int l) const;
+
+    /**
+     * The two DoFs (x, y) of the mesh vertex at @p p; throws if no vertex
+     * lies within a relative distance 1e-10 of the component's size.
+     */
+    std::array<types::global_dof_index, 2>
+    vertex_dofs(const Point<2> &p) const;
+
+    /** Location of every DoF (for Q_p elements, the nodes). */
+    const std::vector<Point<2>> &
+    support_points() const;
+
+    /** Direction of every DoF: 0 for u_x, 1 for u_y. */
+    const std::vector<unsigned char> &
+    dof_directions() const;
+
+    /**
+     * Assembles K and M again in one pass with each cell's own E and rho
+     * (instead of summing zone matrices). Independent route for tests.
+     */
+    void
+    assemble_directly(SparseMatrix<double> &K, SparseMatrix<double> &M) const;
+
+    /**
+     * The three rigid-body motions (x translation, y translation, rotation
+     * about the component's centre), evaluated at the DoFs, ignoring clamps.
+     */
+    std::vector<Vector<double>>
+    rigid_body_motions() const;
+
+  private:
+    void
+    make_mesh(const unsigned int n_refinements);
+    void
+    setup_dofs();
+    void
+    assemble_zone_matrices();
+    void
+    assemble_loads();
+    void
+    form_global_matrices() const;
+
+    ComponentDescription description_;
+    PlaneModel           plane_model_;
+
+    Triangulation<2>           triangulation_;
+    FESystem<2>                fe_;
+    DoFHandler<2>              dof_handler_;
+    AffineConstraints<double>  constraints_;
+    std::vector<Point<2>>      support_points_;
+    std::vector<unsigned char> dof_directions_;
+
+    SparsityPattern                   sparsity_pattern_;
+    std::vector<SparseMatrix<double>> zone_stiffness_;
+    std::vector<SparseMatrix<double>> zone_mass_;
+    std::vector<double>               zone_moduli_;
+    std::vector<double>               zone_densities_;
+    // Formed from the zone matrices on demand (see set_zone_materials()).
+    mutable SparseMatrix<double> stiffness_;
+    mutable SparseMatrix<double> mass_;
+    mutable bool                 matrices_current_ = false;
+    std::vector<Vector<double>>  unit_loads_;
+    Vector<double>               load_;
+  };
+} // namespace FuzzyContact
+
+#endif

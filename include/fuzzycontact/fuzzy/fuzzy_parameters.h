@@ -1,0 +1,71 @@
+// The fuzzy parameters of a study, as a parameter file declares them:
+//
+//   set fuzzy parameters = P1.E, P2.E, P1.tip.force
+//
+//   subsection Fuzzy parameter P1.E
+//     set shape    = triangular
+//     set values   = 0.95, 1, 1.05
+//     set relative = true        # values are factors of the scene's value
+//   end
+//   subsection Fuzzy parameter P1.tip.force
+//     set shape  = triangular
+//     set values = 10e3, 50e3, 100e3
+//   end
+//
+// Every name must be a quantity of the scene (scene_quantity.h); the support
+// of each fuzzy number must be admissible for it (a modulus stays positive,
+// a friction coefficient non-negative).
+
+#ifndef fuzzycontact_fuzzy_fuzzy_parameters_h
+#define fuzzycontact_fuzzy_fuzzy_parameters_h
+
+#include <fuzzycontact/fuzzy/fuzzy_number.h>
+#include <fuzzycontact/scene/scene.h>
+#include <fuzzycontact/scene/scene_quantity.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+#include <vector>
+
+namespace FuzzyContact
+{
+  struct FuzzyParameter
+  {
+    SceneQuantity quantity;
+    FuzzyNumber   number;
+  };
+
+  class FuzzyParameterSet
+  {
+  public:
+    /** Declares the list and one subsection per name known so far. */
+    void
+    declare_parameters(ParameterHandler &prm) const;
+
+    /** Reads the list of names; true if it changed. */
+    bool
+    learn_names(ParameterHandler &prm);
+
+    /** Reads every fuzzy number and binds it to @p scene. */
+    void
+    parse_parameters(ParameterHandler &prm, const Scene &scene);
+
+    const std::vector<FuzzyParameter> &
+    parameters() const;
+    std::vector<FuzzyNumber>
+    numbers() const;
+    std::vector<std::string>
+    names() const;
+
+    /** @p scene with parameter i set to values[i]. */
+    Scene
+    apply(const Scene &scene, const std::vector<double> &values) const;
+
+  private:
+    std::vector<std::string>    names_;
+    std::vector<FuzzyParameter> parameters_;
+  };
+} // namespace FuzzyContact
+
+#endif

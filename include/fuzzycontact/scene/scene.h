@@ -1,0 +1,222 @@
+// The description of a scene: 2D components, their material zones, clamps,
+// loads and the contact pairs between them, read from a deal.II parameter
+// file.
+//
+// A scene file names its components, contact pairs, zones and loads in
+// lists, and each name opens a subsection of its own:
+//
+//   subsection Scene
+//     set plane model   = plane stress
+//     set components    = P1, P2
+//     set contact pairs = interface
+//   end
+//   subsection Component P1
+//     set lower left corner  = 0, 1e-8
+//     ...
+//     set loads = tip
+//     subsection Load tip
+//       set face        = right
+//       set total force = 50000
+//     end
+//   end
+//
+// Since the subsections depend on the names, Scene::read() parses the file
+// in passes: each pass declares what the previous one has learnt and skips
+// the rest; the last pass is strict, so that a misspelt key is reported
+// rather than ignored. This header holds plain descriptions only (no
+// deal.II mesh objects), so it is cheap to include.
+
+#ifndef fuzzycontact_scene_scene_h
+#define fuzzycontact_scene_scene_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace FuzzyContact
+{
+  using namespace dealii;
+
+  /**
+   * The 2D idealisation of the bodies: plane stress for a narrow beam
+   * (sigma_zz = 0), plane strain for a strip much wider than it is high
+   * (eps_zz = 0).
+   */
+  enum class PlaneModel
+  {
+    plane_stress,
+    plane_strain
+  };
+
+  std::string
+  to_string(PlaneModel model);
+
+  /**
+   * The four straight faces of a rectangular component, numbered as deal.II's
+   * colorized hyper rectangle numbers its boundary ids (left = 0, right = 1,
+   * bottom = 2, top = 3).
+   */
+  enum class Face : unsigned int
+  {
+    left   = 0,
+    right  = 1,
+    bottom = 2,
+    top    = 3
+  };
+
+  std::string
+  to_string(Face face);
+
+  /**
+   * Parses "left", "right", "bottom" or "top"; throws a message naming
+   * @p what otherwise.
+   */
+  Face
+  face_from_string(const std::string &name, const std::string &what);
+
+  /**
+   * A rectangular material zone of a component. Cells whose centre lies in
+   * [x_range] x [y_range] belong to the zone; the zones of a component must
+   * cover every cell exactly once, and their edges must lie on mesh lines
+   * (checked when the mesh is built).
+   */
+  struct MaterialZone
+  {
+    std::string           name;
+    std::array<double, 2> x_range;
+    std::array<double, 2> y_range;
+    double                youngs_modulus;
+    double                poissons_ratio;
+    double                density;
+  };
+
+  /**
+   * A load distributed uniformly over one face: a constant traction whose
+   * resultant is total_force * direction (direction has unit length).
+   */
+  struct EdgeLoad
+  {
+    std::string  name;
+    Face         face;
+    double       total_force;
+    Tensor<1, 2> direction;
+  };
+
+  /**
+   * One rectangular 2D component (a beam, say).
+   */
+  struct ComponentDescription
+  {
+    std::string               name;
+    Point<2>                  lower_left;
+    Point<2>                  upper_right;
+    std::array<unsigned, 2>   subdivisions;
+    unsigned int              fe_degree;
+    double                    thickness;
+    std::vector<MaterialZone> zones;
+    /**
+     * True if the parameter file lists no zones: then zones holds one zone
+     * called "body" over the whole component, with the component's
+     * material, and the file has no 'Zone' subsection for it.
+     */
+    bool                  implicit_zone = false;
+    std::vector<Face>     clamped_faces;
+    std::vector<EdgeLoad> loads;
+
+    double
+    length() const;
+    double
+    height() const;
+
+    /** Index of the zone called @p zone_name; throws if there is none. */
+    unsigned int
+    zone_index(const std::string &zone_name) const;
+  };
+
+  /**
+   * A node-to-segment contact pair: the nodes of the slave face touch the
+   * master face of another component.
+   */
+  struct ContactPairDescription
+  {
+    std::string name;
+    std::string slave_component;
+    Face        slave_face;
+    std::string master_component;
+    Face        master_face;
+    double      friction_coefficient;
+    /**
+     * Gap of every slave node in the reference configuration. If false,
+     * the gap is measured from the geometry of the two faces.
+     */
+    bool   has_initial_gap;
+    double initial_gap;
+  };
+
+  /**
+   * A scene: the plane model, the components and the contact pairs.
+   */
+  class Scene
+  {
+  public:
+    /**
+     * Reads and checks a scene file. Throws an exception whose message names
+     * the offending parameter (with file and line where ParameterHandler
+     * knows them) for unknown keys, malformed numbers, NaN, non-positive
+     * lengths, moduli, densities, thicknesses, subdivisions, unknown faces
+     * and components.
+     */
+    static Scene
+    read(const std::string &filename);
+
+    /** Same as read(), from the text of a parameter file. */
+    static Scene
+    read_from_string(const std::string &text,
+                     const std::string &source_name = "scene");
+
+    /**
+     * Declares the entries of a scene whose names are those of this object
+     * (no components at all for a default-constructed one).
+     */
+    void
+    declare_parameters(ParameterHandler &prm) const;
+
+    /**
+     * Reads the declared entries back, checking each value.
+     */
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /** Index of the component called @p name; throws if there is none. */
+    unsigned int
+    component_index(const std::string &name) const;
+
+    std::string                         name;
+    PlaneModel                          plane_model = PlaneModel::plane_stress;
+    std::vector<ComponentDescription>   components;
+    std::vector<ContactPairDescription> contact_pairs;
+
+  private:
+    /**
+     * Reads only the lists of names (components, zones, loads, contact
+     * pairs) from @p prm, leaving numbers alone. Used by the passes of
+     * read().
+     */
+    void
+    parse_names(ParameterHandler &prm);
+
+    /** All names (components, zones, loads, pairs) in one string. */
+    std::string
+    names_signature() const;
+
+    /** Checks what can be checked without a mesh. */
+    void
+    check() const;
+  };
+} // namespace FuzzyContact
+
+#endif

@@ -1,0 +1,245 @@
+#include <fuzzycontact/contact/contact_problem.h>
+
+#include <deal.II/base/exceptions.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace FuzzyContact
+{
+  std::string
+  to_string(const ContactStatus status)
+  {
+    switch (status)
+      {
+        case ContactStatus::open:
+          return "open";
+        case ContactStatus::stick:
+          return "stick";
+        case ContactStatus::slip:
+          return "slip";
+      }
+    return "?";
+  }
+
+
+  DenseFlexibility::DenseFlexibility(const FullMatrix<double> &W)
+      : W(W)
+  {
+    AssertDimension(W.m(), W.n());
+  }
+
+  unsigned int
+  DenseFlexibility::size() const
+  {
+    return W.m();
+  }
+
+  void
+  DenseFlexibility::prepare(const std::vector<unsigned int> &)
+  {
+  }
+
+  double
+  DenseFlexibility::operator()(const unsigned int i, const unsigned int j) const
+  {
+    return W(i, j);
+  }
+
+
+  unsigned int
+  ContactProblem::n_nodes() const
+  {
+    return mu.size();
+  }
+
+  unsigned int
+  ContactProblem::n_rows() const
+  {
+    return 2 * mu.size();
+  }
+
+  Vector<double>
+  ContactProblem::free_gaps(const double load_factor) const
+  {
+    Vector<double> g = g_initial;
+    g.add(load_factor, g_load);
+    return g;
+  }
+
+  void
+  ContactProblem::shift_gaps(const double offset)
+  {
+    AssertThrow(std::isfinite(offset),
+                ExcMessage("gap offset must be a finite number."));
+    for (unsigned int k = 0; k < n_nodes(); ++k)
+      g_initial[normal_row(k)] += offset;
+  }
+
+  void
+  ContactProblem::set_friction_coefficient(const double value)
+  {
+    AssertThrow(std::isfinite(value) && value >= 0,
+                ExcMessage("friction coefficient must not be negative, got " +
+                           std::to_string(value) + "."));
+    std::fill(mu.begin(), mu.end(), value);
+  }
+
+  void
+  ContactProblem::check() const
+  {
+    const unsigned int m = n_rows();
+    AssertThrow(W.m() == m && W.n() == m && g_initial.size() == m &&
+                  g_load.size() == m,
+                ExcMessage("ContactProblem: W, g_initial and g_load must all "
+                           "have 2 rows per node."));
+    for (unsigned int i = 0; i < m; ++i)
+      {
+        AssertThrow(std::isfinite(g_initial[i]) && std::isfinite(g_load[i]),
+                    ExcMessage("ContactProblem: a gap is not finite."));
+        for (unsigned int j = 0; j < m; ++j)
+          AssertThrow(std::isfinite(W(i, j)),
+                      ExcMessage("ContactProblem: W has a non-finite entry."));
+      }
+    for (const double value : mu)
+      AssertThrow(std::isfinite(value) && value >= 0,
+                  ExcMessage("ContactProblem: friction coefficients must not "
+                             "be negative."));
+  }
+
+
+  ContactState
+  solve_in_load_steps(
+    const Vector<double>                                &g_initial,
+    const Vector<double>                                &g_load,
+    const double                                         load_factor,
+    const unsigned int                                   n_steps,
+    const std::function<ContactState(const LoadStep &)> &solve_step)
+  {
+    AssertThrow(n_steps >= 1,
+                ExcMessage("The number of load steps must be at least 1."));
+    AssertThrow(std::isfinite(load_factor),
+                ExcMessage("The load factor must be finite."));
+    const unsigned int m = g_initial.size();
+    AssertDimension(g_load.size(), m);
+
+    ContactState state;
+    state.p.reinit(m);
+    state.g = g_initial;
+    state.status.assign(m / 2, ContactStatus::open);
+    state.slip_sign.assign(m / 2, 0);
+
+    unsigned int iterations = 0;
+    double       residual   = 0;
+    for (unsigned int s = 1; s <= n_steps; ++s)
+      {
+        LoadStep step;
+        step.step        = s;
+        step.load_factor = load_factor * s / n_steps;
+        step.g_free      = g_initial;
+        step.g_free.add(step.load_factor, g_load);
+        step.g_previous = state.g;
+        step.previous   = state;
+        state           = solve_step(step);
+        iterations += state.iterations;
+        residual = std::max(residual, state.residual);
+      }
+    state.iterations = iterations;
+    state.residual   = residual;
+    return state;
+  }
+
+
+  std::vector<double>
+  complementarity_residuals(const Vector<double>      &p,
+                            const Vector<double>      &g,
+                            const Vector<double>      &g_previous,
+                            const std::vector<double> &mu,
+                            const std::function<double(unsigned int)> &c_n,
+                            const std::function<double(unsigned int)> &c_t)
+  {
+    const unsigned int n = mu.size();
+    AssertDimension(p.size(), 2 * n);
+    AssertDimension(g.size(), 2 * n);
+    AssertDimension(g_previous.size(), 2 * n);
+    std::vector<double> r(n, 0.);
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        const double pn = p[normal_row(k)], pt = p[tangential_row(k)];
+        const double gn = g[normal_row(k)];
+        // An open node with a non-negative gap and no force satisfies both
+        // conditions whatever the scaling.
+        if (pn == 0 && pt == 0 && gn >= 0)
+          continue;
+        const double a   = std::max(0., pn - c_n(k) * gn);
+        const double phi = pn - a;
+        double       psi = pt;
+        if (mu[k] > 0 && a > 0)
+          {
+            const double dgt =
+              g[tangential_row(k)] - g_previous[tangential_row(k)];
+            const double z = pt - c_t(k) * dgt;
+            psi            = pt - std::clamp(z, -mu[k] * a, mu[k] * a);
+          }
+        r[k] = std::abs(phi) + std::abs(psi);
+      }
+    return r;
+  }
+
+
+  double
+  residual_scale(const Vector<double>                      &p,
+                 const Vector<double>                      &g_free,
+                 const std::function<double(unsigned int)> &c_n)
+  {
+    double total = 0;
+    for (unsigned int k = 0; 2 * k < p.size(); ++k)
+      total += std::max(p[normal_row(k)], 0.);
+    if (total > 0)
+      return total;
+    // No contact force at all: the force that would close the largest
+    // free penetration.
+    double scale = 0;
+    for (unsigned int k = 0; 2 * k < p.size(); ++k)
+      if (g_free[normal_row(k)] < 0)
+        scale = std::max(scale, -c_n(k) * g_free[normal_row(k)]);
+    return scale;
+  }
+
+
+  double
+  ContactSolution::p_n(const unsigned int k) const
+  {
+    return p[normal_row(k)];
+  }
+
+  double
+  ContactSolution::p_t(const unsigned int k) const
+  {
+    return p[tangential_row(k)];
+  }
+
+  unsigned int
+  ContactSolution::n_nodes() const
+  {
+    return p.size() / 2;
+  }
+
+  unsigned int
+  ContactSolution::count(const ContactStatus s) const
+  {
+    return std::count(status.begin(), status.end(), s);
+  }
+
+  void
+  ContactSolution::compute_totals()
+  {
+    normal_force     = 0;
+    tangential_force = 0;
+    for (unsigned int k = 0; k < n_nodes(); ++k)
+      {
+        normal_force += p_n(k);
+        tangential_force += p_t(k);
+      }
+  }
+} // namespace FuzzyContact

@@ -1,0 +1,443 @@
+#include <fuzzycontact/contact/full_order_contact.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/timer.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace FuzzyContact
+{
+  // The Schur complement W seen by the active set solver.
+  class FullOrderContact::Flexibility : public FlexibilityOperator
+  {
+  public:
+    explicit Flexibility(FullOrderContact &owner)
+        : owner(owner)
+    {
+    }
+    unsigned int
+    size() const override
+    {
+      return owner.interface.n_rows();
+    }
+    void
+    prepare(const std::vector<unsigned int> &js) override
+    {
+      for (const unsigned int j : js)
+        owner.prepare_column(j);
+    }
+    double
+    operator()(const unsigned int i, const unsigned int j) const override
+    {
+      return owner.entry(i, j);
+    }
+
+  private:
+    FullOrderContact &owner;
+  };
+
+
+  FullOrderContact::FullOrderContact(
+    const std::vector<const Component *> &components,
+    const ContactInterface               &interface,
+    const ActiveSetParameters            &parameters)
+      : components(components)
+      , interface(interface)
+      , solver(parameters)
+      , factorized(components.size())
+  {
+    AssertThrow(components.size() == interface.n_components(),
+                ExcMessage("FullOrderContact: one component per component of "
+                           "the contact interface is needed."));
+  }
+
+  void
+  FullOrderContact::set_load_factor(const double load_factor)
+  {
+    AssertThrow(std::isfinite(load_factor),
+                ExcMessage("The load factor must be finite."));
+    load_factor_ = load_factor;
+  }
+
+  double
+  FullOrderContact::load_factor() const
+  {
+    return load_factor_;
+  }
+
+  void
+  FullOrderContact::set_n_load_steps(const unsigned int n_load_steps)
+  {
+    AssertThrow(n_load_steps >= 1,
+                ExcMessage("n_load_steps must be at least 1."));
+    n_load_steps_ = n_load_steps;
+  }
+
+  void
+  FullOrderContact::set_warm_start(const bool warm_start)
+  {
+    warm_start_ = warm_start;
+  }
+
+  void
+  FullOrderContact::set_displacement_fields(const bool fields)
+  {
+    displacement_fields_ = fields;
+  }
+
+
+  void
+  FullOrderContact::observe(const ReportNodes &report)
+  {
+    std::vector<std::vector<types::global_dof_index>> dofs(components.size());
+    for (const FaceNode *node :
+         {&report.slave, &report.master[0], &report.master[1]})
+      for (unsigned int d = 0; d < 2; ++d)
+        dofs[node->component].push_back(node->dofs[d]);
+    if (dofs == observed_dofs)
+      return;
+    // Columns computed for other DoFs would lack the values at these.
+    observed_dofs = dofs;
+    for (Factorized &F : factorized)
+      {
+        F.columns.clear();
+        F.columns.resize(interface.n_rows());
+        F.observed_columns.clear();
+        F.observed_columns.resize(interface.n_rows());
+      }
+    columns.clear();
+    columns.resize(interface.n_rows());
+  }
+
+
+  double
+  FullOrderContact::observed_displacement(const unsigned int            c,
+                                          const types::global_dof_index dof,
+                                          const Vector<double>         &p)
+  {
+    const Factorized &F = factorized[c];
+    const auto        position =
+      std::find(observed_dofs[c].begin(), observed_dofs[c].end(), dof) -
+      observed_dofs[c].begin();
+    Assert(position < static_cast<long>(observed_dofs[c].size()),
+           ExcInternalError());
+    double u = load_factor_ * F.free_solution[dof];
+    for (unsigned int j = 0; j < p.size(); ++j)
+      if (p[j] != 0 && !F.observed_columns[j].empty())
+        u += p[j] * F.observed_columns[j][position];
+    return u / F.scale;
+  }
+
+
+  void
+  FullOrderContact::update_factorizations()
+  {
+    const unsigned int m             = interface.n_rows();
+    bool               scale_changed = false;
+    for (unsigned int c = 0; c < components.size(); ++c)
+      {
+        Factorized                &F      = factorized[c];
+        const std::vector<double> &moduli = components[c]->zone_moduli();
+        bool                       reuse  = (F.inverse != nullptr);
+        double                     scale  = 1;
+        if (reuse)
+          {
+            scale = moduli[0] / F.moduli[0];
+            for (unsigned int z = 0; z < moduli.size(); ++z)
+              reuse = reuse && std::abs(moduli[z] / F.moduli[z] - scale) <=
+                                 1e-14 * scale;
+          }
+        if (reuse)
+          {
+            if (scale != F.scale)
+              scale_changed = true;
+            F.scale = scale;
+            continue;
+          }
+        F.inverse = std::make_unique<SparseDirectSolver>();
+        F.inverse->factorize(components[c]->stiffness_matrix());
+        ++factorizations;
+        F.moduli        = moduli;
+        F.scale         = 1;
+        F.free_solution = components[c]->load_vector();
+        F.inverse->solve(F.free_solution);
+        ++back_substitutions;
+        F.columns.clear();
+        F.columns.resize(m);
+        F.observed_columns.clear();
+        F.observed_columns.resize(m);
+        scale_changed = true;
+      }
+    if (scale_changed || columns.size() != m)
+      {
+        columns.clear();
+        columns.resize(m);
+      }
+  }
+
+
+  void
+  FullOrderContact::prepare_column(const unsigned int j)
+  {
+    AssertIndexRange(j, interface.n_rows());
+    if (columns[j] != nullptr)
+      return;
+    const unsigned int m   = interface.n_rows();
+    auto               sum = std::make_unique<Vector<double>>(m);
+    for (unsigned int c = 0; c < components.size(); ++c)
+      {
+        const SparseMatrix<double> &C = interface.gap_operator(c);
+        if (C.begin(j) == C.end(j))
+          continue; // row j does not touch component c
+        Factorized &F = factorized[c];
+        if (F.columns[j] == nullptr)
+          {
+            Vector<double> z(components[c]->n_dofs());
+            for (auto it = C.begin(j); it != C.end(j); ++it)
+              z[it->column()] = it->value();
+            F.inverse->solve(z);
+            ++back_substitutions;
+            F.columns[j] = std::make_unique<Vector<double>>(m);
+            C.vmult(*F.columns[j], z);
+            if (c < observed_dofs.size() && !observed_dofs[c].empty())
+              {
+                F.observed_columns[j].clear();
+                for (const types::global_dof_index dof : observed_dofs[c])
+                  F.observed_columns[j].push_back(z[dof]);
+              }
+          }
+        sum->add(1. / F.scale, *F.columns[j]);
+      }
+    columns[j] = std::move(sum);
+  }
+
+
+  double
+  FullOrderContact::entry(const unsigned int i, const unsigned int j) const
+  {
+    Assert(columns[j] != nullptr, ExcInternalError());
+    return (*columns[j])[i];
+  }
+
+
+  FullMatrix<double>
+  FullOrderContact::flexibility()
+  {
+    update_factorizations();
+    const unsigned int m = interface.n_rows();
+    FullMatrix<double> W(m, m);
+    for (unsigned int j = 0; j < m; ++j)
+      {
+        prepare_column(j);
+        for (unsigned int i = 0; i < m; ++i)
+          W(i, j) = entry(i, j);
+      }
+    return W;
+  }
+
+
+  Vector<double>
+  FullOrderContact::load_gaps()
+  {
+    update_factorizations();
+    Vector<double> g(interface.n_rows());
+    for (unsigned int c = 0; c < components.size(); ++c)
+      {
+        Vector<double> u = factorized[c].free_solution;
+        u /= factorized[c].scale;
+        interface.gap_operator(c).vmult_add(g, u);
+      }
+    return g;
+  }
+
+
+  ContactSolution
+  FullOrderContact::solve(const ReportNodes *report)
+  {
+    Timer timer;
+    update_factorizations();
+    if (report != nullptr)
+      observe(*report);
+
+    const Vector<double>      g_initial = interface.initial_gaps();
+    const Vector<double>      g_load    = load_gaps();
+    const std::vector<double> mu        = interface.friction_coefficients();
+    Flexibility               W(*this);
+
+    Vector<double>     last_g_previous;
+    const ContactState state = solve_in_load_steps(
+      g_initial,
+      g_load,
+      load_factor_,
+      n_load_steps_,
+      [&](const LoadStep &step) {
+        LoadStep start = step;
+        if (step.step == 1 && warm_start_ && last_state)
+          start.previous = *last_state;
+        last_g_previous = step.g_previous;
+        return solver.solve(W, start, mu, "full-order contact solver");
+      });
+    last_state = state;
+
+    if (!displacement_fields_)
+      {
+        // Forces and residual from the active set solution on W; the report's
+        // displacements from the free solutions and the kept columns.
+        ContactSolution solution;
+        solution.solver       = "full_order";
+        solution.iterations   = state.iterations;
+        solution.n_load_steps = n_load_steps_;
+        solution.p            = state.p;
+        solution.g            = state.g;
+        solution.status       = state.status;
+        solution.residual     = state.residual;
+        if (report != nullptr)
+          {
+            for (unsigned int j = 0; j < state.p.size(); ++j)
+              if (state.p[j] != 0)
+                prepare_column(j);
+            for (unsigned int d = 0; d < 2; ++d)
+              {
+                solution.slave_displacement[d] =
+                  observed_displacement(report->slave.component,
+                                        report->slave.dofs[d],
+                                        state.p);
+                for (unsigned int i = 0; i < 2; ++i)
+                  solution.master_displacements[i][d] =
+                    observed_displacement(report->master[i].component,
+                                          report->master[i].dofs[d],
+                                          state.p);
+              }
+          }
+        solution.compute_totals();
+        solution.time = timer.wall_time();
+        return solution;
+      }
+
+    // Displacements u_c = K_c^{-1} (lambda f_c + C_c^T p), and the residual
+    // of their own gaps g0 + C u. The columns of W carry the error of a
+    // plain back-substitution (up to 1e-9 relative on fine meshes, from the
+    // condition of K), so the forces are refined with the gaps of the
+    // accurately solved displacements: W's restriction to the final active
+    // set maps the remaining constraint violation to a force correction.
+    ContactState    final_state = state;
+    ContactSolution solution;
+    solution.solver       = "full_order";
+    solution.iterations   = state.iterations;
+    solution.n_load_steps = n_load_steps_;
+    std::vector<double> cn(interface.n_nodes(), 0), ct(interface.n_nodes(), 0);
+    const std::function<double(unsigned int)> c_n = [&](const unsigned int k) {
+      if (cn[k] == 0)
+        {
+          prepare_column(normal_row(k));
+          cn[k] = 1. / entry(normal_row(k), normal_row(k));
+        }
+      return cn[k];
+    };
+    const std::function<double(unsigned int)> c_t = [&](const unsigned int k) {
+      if (ct[k] == 0)
+        {
+          prepare_column(tangential_row(k));
+          ct[k] = 1. / entry(tangential_row(k), tangential_row(k));
+        }
+      return ct[k];
+    };
+    Vector<double> g_free = g_initial;
+    g_free.add(load_factor_, g_load);
+    for (unsigned int refinement = 0;; ++refinement)
+      {
+        solution.displacements.clear();
+        for (unsigned int c = 0; c < components.size(); ++c)
+          {
+            Vector<double> rhs(components[c]->n_dofs());
+            interface.gap_operator(c).Tvmult(rhs, final_state.p);
+            rhs.add(load_factor_, components[c]->load_vector());
+            solution.displacements.push_back(accurate_solve(c, rhs));
+          }
+        solution.g                  = interface.gaps(solution.displacements);
+        const std::vector<double> r = complementarity_residuals(final_state.p,
+                                                                solution.g,
+                                                                last_g_previous,
+                                                                mu,
+                                                                c_n,
+                                                                c_t);
+        const double              worst = *std::max_element(r.begin(), r.end());
+        solution.residual =
+          worst == 0 ? 0. : worst / residual_scale(final_state.p, g_free, c_n);
+        if (solution.residual <= solver.parameters().tolerance ||
+            refinement == 3)
+          break;
+        Vector<double> violation = solution.g;
+        for (unsigned int k = 0; k < interface.n_nodes(); ++k)
+          violation[tangential_row(k)] -= last_g_previous[tangential_row(k)];
+        final_state.p += solver.correction(W, final_state, mu, violation);
+      }
+    solution.p      = final_state.p;
+    solution.status = final_state.status;
+
+    if (report != nullptr)
+      {
+        const auto &u = solution.displacements;
+        for (unsigned int d = 0; d < 2; ++d)
+          {
+            solution.slave_displacement[d] =
+              u[report->slave.component][report->slave.dofs[d]];
+            for (unsigned int i = 0; i < 2; ++i)
+              solution.master_displacements[i][d] =
+                u[report->master[i].component][report->master[i].dofs[d]];
+          }
+      }
+    solution.compute_totals();
+    solution.time = timer.wall_time();
+    return solution;
+  }
+
+
+  Vector<double>
+  FullOrderContact::accurate_solve(const unsigned int    c,
+                                   const Vector<double> &rhs)
+  {
+    // K = s K_ref: u = K_ref^{-1} rhs / s, then one step of iterative
+    // refinement with the residual accumulated in long double.
+    const Factorized &F = factorized[c];
+    Vector<double>    u = rhs;
+    F.inverse->solve(u);
+    u /= F.scale;
+    const SparseMatrix<double> &K = components[c]->stiffness_matrix();
+    Vector<double>              r(rhs.size());
+    for (unsigned int i = 0; i < rhs.size(); ++i)
+      {
+        long double sum = rhs[i];
+        for (auto it = K.begin(i); it != K.end(i); ++it)
+          sum -= static_cast<long double>(it->value()) * u[it->column()];
+        r[i] = static_cast<double>(sum);
+      }
+    F.inverse->solve(r);
+    u.add(1. / F.scale, r);
+    back_substitutions += 2;
+    return u;
+  }
+
+
+  unsigned int
+  FullOrderContact::n_factorizations() const
+  {
+    return factorizations;
+  }
+
+  unsigned int
+  FullOrderContact::n_back_substitutions() const
+  {
+    return back_substitutions;
+  }
+
+  unsigned int
+  FullOrderContact::n_columns() const
+  {
+    unsigned int n = 0;
+    for (const auto &column : columns)
+      n += (column != nullptr);
+    return n;
+  }
+} // namespace FuzzyContact

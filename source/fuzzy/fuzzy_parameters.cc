@@ -1,0 +1,129 @@
+#include <fuzzycontact/base/input.h>
+#include <fuzzycontact/fuzzy/fuzzy_parameters.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+namespace FuzzyContact
+{
+  using namespace dealii;
+
+  void
+  FuzzyParameterSet::declare_parameters(ParameterHandler &prm) const
+  {
+    prm.declare_entry("fuzzy parameters",
+                      "",
+                      Patterns::Anything(),
+                      "Comma-separated scene quantities that are fuzzy "
+                      "(P1.E, P1.root.rho, P1.tip.force, interface.mu, "
+                      "interface.gap, ...); each has a subsection 'Fuzzy "
+                      "parameter <name>'.");
+    for (const std::string &name : names_)
+      {
+        prm.enter_subsection("Fuzzy parameter " + name);
+        prm.declare_entry("shape",
+                          "triangular",
+                          Patterns::Selection("crisp|triangular|trapezoidal"),
+                          "Membership function.");
+        prm.declare_entry("values",
+                          "",
+                          Patterns::Anything(),
+                          "crisp: x; triangular: a, m, b; trapezoidal: a, "
+                          "m1, m2, b (support [a, b], core [m1, m2]).",
+                          /*has_to_be_set=*/true);
+        prm.declare_entry("relative",
+                          "false",
+                          Patterns::Bool(),
+                          "If true, the values are factors of the scene's "
+                          "own value of the quantity.");
+        prm.leave_subsection();
+      }
+  }
+
+
+  bool
+  FuzzyParameterSet::learn_names(ParameterHandler &prm)
+  {
+    std::vector<std::string> names;
+    for (const std::string &n :
+         Utilities::split_string_list(prm.get("fuzzy parameters"), ','))
+      {
+        AssertThrow(!n.empty(),
+                    ExcMessage("fuzzy parameters: the list contains an empty "
+                               "name."));
+        for (const std::string &other : names)
+          AssertThrow(other != n,
+                      ExcMessage("fuzzy parameters: <" + n +
+                                 "> appears twice."));
+        names.push_back(n);
+      }
+    const bool changed = names != names_;
+    names_             = names;
+    return changed;
+  }
+
+
+  void
+  FuzzyParameterSet::parse_parameters(ParameterHandler &prm, const Scene &scene)
+  {
+    learn_names(prm);
+    parameters_.clear();
+    for (const std::string &name : names_)
+      {
+        const std::string where = "Fuzzy parameter " + name;
+        FuzzyParameter    p;
+        p.quantity = SceneQuantity::parse(name, scene);
+        prm.enter_subsection(where);
+        std::vector<double> values =
+          Input::to_doubles(prm.get("values"), where + ": values");
+        if (prm.get_bool("relative"))
+          {
+            const double nominal = p.quantity.value(scene);
+            for (double &v : values)
+              v *= nominal;
+          }
+        p.number = FuzzyNumber::from(prm.get("shape"), values, where);
+        prm.leave_subsection();
+
+        // Every value of the support must be admissible for the quantity.
+        Scene check = scene;
+        for (const double v : {p.number.points()[0], p.number.points()[3]})
+          p.quantity.apply(check, v);
+        parameters_.push_back(p);
+      }
+  }
+
+
+  const std::vector<FuzzyParameter> &
+  FuzzyParameterSet::parameters() const
+  {
+    return parameters_;
+  }
+
+  std::vector<FuzzyNumber>
+  FuzzyParameterSet::numbers() const
+  {
+    std::vector<FuzzyNumber> n;
+    for (const FuzzyParameter &p : parameters_)
+      n.push_back(p.number);
+    return n;
+  }
+
+  std::vector<std::string>
+  FuzzyParameterSet::names() const
+  {
+    return names_;
+  }
+
+  Scene
+  FuzzyParameterSet::apply(const Scene               &scene,
+                           const std::vector<double> &values) const
+  {
+    AssertThrow(values.size() == parameters_.size(),
+                ExcMessage("Expected one value per fuzzy parameter."));
+    Scene result = scene;
+    for (unsigned int i = 0; i < values.size(); ++i)
+      parameters_[i].quantity.apply(result, values[i]);
+    return result;
+  }
+} // namespace FuzzyContact
