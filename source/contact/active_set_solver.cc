@@ -571,20 +571,19 @@ namespace FuzzyContact
   }
 
 
-  ContactState
-  ActiveSetSolver::solve(const ContactProblem &problem,
-                         const double          load_factor,
-                         const unsigned int    n_load_steps,
-                         const std::string    &what) const
+  std::string
+  ActiveSetSolver::name() const
   {
-    problem.check();
+    return "reduced exact";
+  }
+
+
+  ContactState
+  ActiveSetSolver::solve_step(const ContactProblem &problem,
+                              const LoadStep       &step,
+                              const std::string    &what) const
+  {
     DenseFlexibility W(problem.W);
-    return solve_in_load_steps(problem.g_initial,
-                               problem.g_load,
-                               load_factor,
-                               n_load_steps,
-                               [&](const LoadStep &step) {
-                                 return solve(W, step, problem.mu, what);
-                               });
+    return solve(W, step, problem.mu, what);
   }
 } // namespace FuzzyContact

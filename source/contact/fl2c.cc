@@ -120,10 +120,17 @@ namespace FuzzyContact
   }
 
 
+  std::string
+  FL2CSolver::name() const
+  {
+    return "fl2c";
+  }
+
+
   ContactState
-  FL2CSolver::solve(const ContactProblem &problem,
-                    const LoadStep       &step,
-                    const std::string    &what) const
+  FL2CSolver::solve_step(const ContactProblem &problem,
+                         const LoadStep       &step,
+                         const std::string    &what) const
   {
     const unsigned int         n  = problem.n_nodes();
     const FullMatrix<double>  &W  = problem.W;
@@ -299,19 +306,4 @@ namespace FuzzyContact
   }
 
 
-  ContactState
-  FL2CSolver::solve(const ContactProblem &problem,
-                    const double          load_factor,
-                    const unsigned int    n_load_steps,
-                    const std::string    &what) const
-  {
-    problem.check();
-    return solve_in_load_steps(problem.g_initial,
-                               problem.g_load,
-                               load_factor,
-                               n_load_steps,
-                               [&](const LoadStep &step) {
-                                 return solve(problem, step, what);
-                               });
-  }
 } // namespace FuzzyContact

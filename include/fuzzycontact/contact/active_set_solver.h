@@ -45,6 +45,7 @@
 #define fuzzycontact_contact_active_set_solver_h
 
 #include <fuzzycontact/contact/contact_problem.h>
+#include <fuzzycontact/contact/contact_solver.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -65,10 +66,22 @@ namespace FuzzyContact
     parse_parameters(ParameterHandler &prm);
   };
 
-  class ActiveSetSolver
+  class ActiveSetSolver : public ContactSolver
   {
   public:
     explicit ActiveSetSolver(const ActiveSetParameters &parameters = {});
+
+    /** "reduced exact". */
+    std::string
+    name() const override;
+
+    /** One load step of a dense problem (the method below on its W). */
+    ContactState
+    solve_step(const ContactProblem &problem,
+               const LoadStep       &step,
+               const std::string    &what) const override;
+
+    using ContactSolver::solve;
 
     /**
      * Solves one load step with flexibility @p W, free gaps
@@ -82,13 +95,6 @@ namespace FuzzyContact
           const LoadStep            &step,
           const std::vector<double> &mu,
           const std::string         &what) const;
-
-    /** All load steps of a ContactProblem. */
-    ContactState
-    solve(const ContactProblem &problem,
-          const double          load_factor,
-          const unsigned int    n_load_steps,
-          const std::string    &what) const;
 
     /**
      * For the statuses of @p state, the change of the forces that removes

@@ -52,6 +52,7 @@
 #define fuzzycontact_contact_fl2c_h
 
 #include <fuzzycontact/contact/contact_problem.h>
+#include <fuzzycontact/contact/contact_solver.h>
 #include <fuzzycontact/contact/fuzzy_regulator.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -89,23 +90,20 @@ namespace FuzzyContact
     check() const;
   };
 
-  class FL2CSolver
+  class FL2CSolver : public ContactSolver
   {
   public:
     explicit FL2CSolver(const FL2CParameters &parameters = {});
 
+    /** "fl2c". */
+    std::string
+    name() const override;
+
     /** One load step (see LoadStep), from the previous step's forces. */
     ContactState
-    solve(const ContactProblem &problem,
-          const LoadStep       &step,
-          const std::string    &what) const;
-
-    /** All load steps. */
-    ContactState
-    solve(const ContactProblem &problem,
-          const double          load_factor,
-          const unsigned int    n_load_steps,
-          const std::string    &what) const;
+    solve_step(const ContactProblem &problem,
+               const LoadStep       &step,
+               const std::string    &what) const override;
 
     /**
      * The largest secant gain sup_x |R(x) / x| of @p regulator, from the
