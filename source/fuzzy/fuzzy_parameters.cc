@@ -85,10 +85,17 @@ namespace FuzzyContact
         p.number = FuzzyNumber::from(prm.get("shape"), values, where);
         prm.leave_subsection();
 
-        // Every value of the support must be admissible for the quantity.
-        Scene check = scene;
+        // Every value of the support must be admissible for the quantity,
+        // and no two parameters may set the same value of the scene.
+        SceneState check(scene);
         for (const double v : {p.number.points()[0], p.number.points()[3]})
-          p.quantity.apply(check, v);
+          p.quantity.apply(check, scene, v);
+        for (const FuzzyParameter &other : parameters_)
+          AssertThrow(!p.quantity.overlaps(other.quantity, scene),
+                      ExcMessage("fuzzy parameters: <" + other.quantity.name +
+                                 "> and <" + name +
+                                 "> set the same value of the scene; declare "
+                                 "only one of them."));
         parameters_.push_back(p);
       }
   }
@@ -115,15 +122,15 @@ namespace FuzzyContact
     return names_;
   }
 
-  Scene
-  FuzzyParameterSet::apply(const Scene               &scene,
+  SceneState
+  FuzzyParameterSet::state(const Scene               &scene,
                            const std::vector<double> &values) const
   {
     AssertThrow(values.size() == parameters_.size(),
                 ExcMessage("Expected one value per fuzzy parameter."));
-    Scene result = scene;
+    SceneState result(scene);
     for (unsigned int i = 0; i < values.size(); ++i)
-      parameters_[i].quantity.apply(result, values[i]);
+      parameters_[i].quantity.apply(result, scene, values[i]);
     return result;
   }
 } // namespace FuzzyContact

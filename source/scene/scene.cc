@@ -4,6 +4,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -98,6 +99,19 @@ namespace FuzzyContact
                 ExcMessage("Component " + name + " has no zone called <" +
                            zone_name + ">."));
     return 0;
+  }
+
+
+  double
+  ComponentDescription::zone_area(const unsigned int z) const
+  {
+    AssertIndexRange(z, zones.size());
+    const MaterialZone &zone = zones[z];
+    const double        dx   = std::min(zone.x_range[1], upper_right[0]) -
+                      std::max(zone.x_range[0], lower_left[0]);
+    const double dy = std::min(zone.y_range[1], upper_right[1]) -
+                      std::max(zone.y_range[0], lower_left[1]);
+    return std::max(dx, 0.) * std::max(dy, 0.);
   }
 
 

@@ -4,19 +4,96 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace FuzzyContact
 {
   using namespace dealii;
 
-  SceneQuantity
-  SceneQuantity::parse(const std::string &name, const Scene &scene)
+  namespace
   {
+    // "a, b, c" for messages.
+    template <typename T, typename Name>
+    std::string
+    list_of(const std::vector<T> &items, const Name &name)
+    {
+      std::string list;
+      for (const T &item : items)
+        list += (list.empty() ? "" : ", ") + name(item);
+      return list.empty() ? "none" : list;
+    }
+
+    // The zone property a material quantity reads and sets.
+    std::vector<std::vector<double>> &
+    zone_values(SceneState &state, const SceneQuantity::Kind kind)
+    {
+      return kind == SceneQuantity::Kind::youngs_modulus ? state.zone_moduli
+                                                         : state.zone_densities;
+    }
+
+    const std::vector<std::vector<double>> &
+    zone_values(const SceneState &state, const SceneQuantity::Kind kind)
+    {
+      return kind == SceneQuantity::Kind::youngs_modulus ? state.zone_moduli
+                                                         : state.zone_densities;
+    }
+
+    // Distance between the facing sides of two axis-aligned rectangles.
+    double
+    face_distance(const ContactPairDescription &pair,
+                  const Scene                  &scene,
+                  const std::string            &name)
+    {
+      const ComponentDescription &s =
+        scene.components[scene.component_index(pair.slave_component)];
+      const ComponentDescription &m =
+        scene.components[scene.component_index(pair.master_component)];
+      const auto side = [](const ComponentDescription &c, const Face f) {
+        switch (f)
+          {
+            case Face::left:
+              return c.lower_left[0];
+            case Face::right:
+              return c.upper_right[0];
+            case Face::bottom:
+              return c.lower_left[1];
+            case Face::top:
+              return c.upper_right[1];
+          }
+        return 0.;
+      };
+      const bool facing =
+        (pair.slave_face == Face::bottom && pair.master_face == Face::top) ||
+        (pair.slave_face == Face::top && pair.master_face == Face::bottom) ||
+        (pair.slave_face == Face::left && pair.master_face == Face::right) ||
+        (pair.slave_face == Face::right && pair.master_face == Face::left);
+      AssertThrow(facing,
+                  ExcMessage(name +
+                             ": the slave and master faces of contact pair " +
+                             pair.name + " do not face each other."));
+      const double s_side = side(s, pair.slave_face);
+      const double m_side = side(m, pair.master_face);
+      return (pair.slave_face == Face::bottom || pair.slave_face == Face::left)
+               ? s_side - m_side
+               : m_side - s_side;
+    }
+  } // namespace
+
+
+  SceneQuantity
+  SceneQuantity::parse(const std::string &full_name, const Scene &scene)
+  {
+    const std::string              name = Utilities::trim(full_name);
     const std::vector<std::string> parts =
       Utilities::split_string_list(name, '.');
     const std::string where = "Scene quantity <" + name + ">";
-    AssertThrow(parts.size() == 2 || parts.size() == 3,
+    AssertThrow((parts.size() == 2 || parts.size() == 3) &&
+                  std::none_of(parts.begin(),
+                               parts.end(),
+                               [](const std::string &p) {
+                                 return p.empty();
+                               }),
                 ExcMessage(where +
                            ": expected <component>.E, <component>.rho, "
                            "<component>.<zone>.E, <component>.<zone>.rho, "
@@ -36,7 +113,12 @@ namespace FuzzyContact
             }
         AssertThrow(false,
                     ExcMessage(where + ": the scene has no contact pair <" +
-                               parts[0] + ">."));
+                               parts[0] + "> (its contact pairs: " +
+                               list_of(scene.contact_pairs,
+                                       [](const auto &p) {
+                                         return p.name;
+                                       }) +
+                               ")."));
       }
 
     bool found = false;
@@ -48,7 +130,13 @@ namespace FuzzyContact
         }
     AssertThrow(found,
                 ExcMessage(where + ": the scene has no component <" + parts[0] +
-                           "> (nor a contact pair of that name)."));
+                           "> (nor a contact pair of that name; its "
+                           "components: " +
+                           list_of(scene.components,
+                                   [](const auto &c) {
+                                     return c.name;
+                                   }) +
+                           ")."));
     const ComponentDescription &component = scene.components[q.component];
 
     const std::string &what = parts.back();
@@ -63,7 +151,12 @@ namespace FuzzyContact
             }
         AssertThrow(false,
                     ExcMessage(where + ": component " + component.name +
-                               " has no load <" + parts[1] + ">."));
+                               " has no load <" + parts[1] + "> (its loads: " +
+                               list_of(component.loads,
+                                       [](const auto &l) {
+                                         return l.name;
+                                       }) +
+                               ")."));
       }
     AssertThrow(what == "E" || what == "rho",
                 ExcMessage(where + ": <" + what +
@@ -72,95 +165,88 @@ namespace FuzzyContact
     q.kind = what == "E" ? Kind::youngs_modulus : Kind::density;
     if (parts.size() == 3)
       {
-        bool zone_found = false;
         for (unsigned int z = 0; z < component.zones.size(); ++z)
           if (component.zones[z].name == parts[1])
-            {
-              q.zone     = z;
-              zone_found = true;
-            }
-        AssertThrow(zone_found,
+            q.zone = z;
+        AssertThrow(q.zone >= 0,
                     ExcMessage(where + ": component " + component.name +
-                               " has no zone <" + parts[1] + ">."));
+                               " has no zone called <" + parts[1] +
+                               "> (its zones: " +
+                               list_of(component.zones,
+                                       [](const auto &z) {
+                                         return z.name;
+                                       }) +
+                               ")."));
       }
-    else
-      for (const MaterialZone &zone : component.zones)
-        {
-          const double first = q.kind == Kind::youngs_modulus
-                                 ? component.zones[0].youngs_modulus
-                                 : component.zones[0].density;
-          const double v =
-            q.kind == Kind::youngs_modulus ? zone.youngs_modulus : zone.density;
-          AssertThrow(v == first,
-                      ExcMessage(where + ": the zones of " + component.name +
-                                 " differ in " + what +
-                                 ", so a single value cannot stand for them; "
-                                 "name a zone (" +
-                                 component.name + ".<zone>." + what + ")."));
-        }
     return q;
+  }
+
+
+  bool
+  SceneQuantity::is_material() const
+  {
+    return kind == Kind::youngs_modulus || kind == Kind::density;
+  }
+
+
+  std::vector<unsigned int>
+  SceneQuantity::zones(const Scene &scene) const
+  {
+    Assert(is_material(), ExcInternalError());
+    if (zone >= 0)
+      return {static_cast<unsigned int>(zone)};
+    std::vector<unsigned int> all(scene.components[component].zones.size());
+    for (unsigned int z = 0; z < all.size(); ++z)
+      all[z] = z;
+    return all;
   }
 
 
   double
   SceneQuantity::value(const Scene &scene) const
   {
+    return value(SceneState(scene), scene);
+  }
+
+
+  double
+  SceneQuantity::value(const SceneState &state, const Scene &scene) const
+  {
     switch (kind)
       {
         case Kind::youngs_modulus:
-          return scene.components[component]
-            .zones[zone < 0 ? 0 : zone]
-            .youngs_modulus;
         case Kind::density:
-          return scene.components[component].zones[zone < 0 ? 0 : zone].density;
+          {
+            const std::vector<double> &values =
+              zone_values(state, kind)[component];
+            if (zone >= 0)
+              return values[zone];
+            // Every zone: the common value, or the area-weighted mean.
+            if (std::all_of(values.begin(), values.end(), [&](const double v) {
+                  return v == values[0];
+                }))
+              return values[0];
+            const ComponentDescription &c        = scene.components[component];
+            double                      weighted = 0, area = 0;
+            for (unsigned int z = 0; z < values.size(); ++z)
+              {
+                weighted += values[z] * c.zone_area(z);
+                area += c.zone_area(z);
+              }
+            return weighted / area;
+          }
         case Kind::load:
-          return scene.components[component].loads[load].total_force;
+          return state.load_forces[component][load];
         case Kind::friction:
-          return scene.contact_pairs[contact_pair].friction_coefficient;
+          return state.friction_coefficients[contact_pair];
         case Kind::gap:
           {
             const ContactPairDescription &pair =
               scene.contact_pairs[contact_pair];
-            if (pair.has_initial_gap)
-              return pair.initial_gap;
-            const ComponentDescription &s =
-              scene.components[scene.component_index(pair.slave_component)];
-            const ComponentDescription &m =
-              scene.components[scene.component_index(pair.master_component)];
-            // Distance between two facing sides of axis-aligned rectangles.
-            const auto side = [](const ComponentDescription &c, const Face f) {
-              switch (f)
-                {
-                  case Face::left:
-                    return c.lower_left[0];
-                  case Face::right:
-                    return c.upper_right[0];
-                  case Face::bottom:
-                    return c.lower_left[1];
-                  case Face::top:
-                    return c.upper_right[1];
-                }
-              return 0.;
-            };
-            const bool facing = (pair.slave_face == Face::bottom &&
-                                 pair.master_face == Face::top) ||
-                                (pair.slave_face == Face::top &&
-                                 pair.master_face == Face::bottom) ||
-                                (pair.slave_face == Face::left &&
-                                 pair.master_face == Face::right) ||
-                                (pair.slave_face == Face::right &&
-                                 pair.master_face == Face::left);
-            AssertThrow(facing,
-                        ExcMessage(name +
-                                   ": the slave and master faces of "
-                                   "contact pair " +
-                                   pair.name + " do not face each other."));
-            const double s_side = side(s, pair.slave_face);
-            const double m_side = side(m, pair.master_face);
-            return (pair.slave_face == Face::bottom ||
-                    pair.slave_face == Face::left)
-                     ? s_side - m_side
-                     : m_side - s_side;
+            const double nominal = pair.has_initial_gap
+                                     ? pair.initial_gap
+                                     : face_distance(pair, scene, name);
+            return nominal + state.gap_offsets[contact_pair];
           }
       }
     return 0;
@@ -168,7 +254,9 @@ namespace FuzzyContact
 
 
   void
-  SceneQuantity::apply(Scene &scene, const double v) const
+  SceneQuantity::apply(SceneState  &state,
+                       const Scene &scene,
+                       const double v) const
   {
     switch (kind)
       {
@@ -176,26 +264,60 @@ namespace FuzzyContact
         case Kind::density:
           {
             Input::positive(v, name);
-            ComponentDescription &c = scene.components[component];
-            for (unsigned int z = 0; z < c.zones.size(); ++z)
-              if (zone < 0 || static_cast<int>(z) == zone)
-                (kind == Kind::youngs_modulus ? c.zones[z].youngs_modulus
-                                              : c.zones[z].density) = v;
+            // From the scene's values: every zone takes v, or (zones that
+            // differ) its own value times v / their nominal mean.
+            const SceneState           nominal(scene);
+            const std::vector<double> &from =
+              zone_values(nominal, kind)[component];
+            std::vector<double> &to   = zone_values(state, kind)[component];
+            const double         mean = value(nominal, scene);
+            const bool           uniform =
+              std::all_of(from.begin(), from.end(), [&](const double x) {
+                return x == from[0];
+              });
+            for (const unsigned int z : zones(scene))
+              to[z] = (zone >= 0 || uniform) ? v : from[z] * (v / mean);
             break;
           }
         case Kind::load:
-          scene.components[component].loads[load].total_force =
-            Input::finite(v, name);
+          state.load_forces[component][load] = Input::finite(v, name);
           break;
         case Kind::friction:
-          scene.contact_pairs[contact_pair].friction_coefficient =
+          state.friction_coefficients[contact_pair] =
             Input::non_negative(v, name);
           break;
         case Kind::gap:
-          scene.contact_pairs[contact_pair].has_initial_gap = true;
-          scene.contact_pairs[contact_pair].initial_gap =
-            Input::finite(v, name);
+          state.gap_offsets[contact_pair] =
+            Input::finite(v, name) - value(scene);
           break;
       }
+  }
+
+
+  bool
+  SceneQuantity::overlaps(const SceneQuantity &other, const Scene &scene) const
+  {
+    if (kind != other.kind)
+      return false;
+    switch (kind)
+      {
+        case Kind::youngs_modulus:
+        case Kind::density:
+          {
+            if (component != other.component)
+              return false;
+            const std::vector<unsigned int> mine = zones(scene);
+            for (const unsigned int z : other.zones(scene))
+              if (std::find(mine.begin(), mine.end(), z) != mine.end())
+                return true;
+            return false;
+          }
+        case Kind::load:
+          return component == other.component && load == other.load;
+        case Kind::friction:
+        case Kind::gap:
+          return contact_pair == other.contact_pair;
+      }
+    return false;
   }
 } // namespace FuzzyContact

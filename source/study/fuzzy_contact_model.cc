@@ -519,21 +519,16 @@ namespace FuzzyContact
   FuzzyContactModel::full_order(const std::vector<double> &values)
   {
     check_values(values);
-    const Scene changed = fuzzy.apply(scene, values);
+    const SceneState changed = fuzzy.state(scene, values);
     for (unsigned int c = 0; c < components.size(); ++c)
       {
-        std::vector<double> moduli, densities;
-        for (const MaterialZone &z : changed.components[c].zones)
-          {
-            moduli.push_back(z.youngs_modulus);
-            densities.push_back(z.density);
-          }
+        const std::vector<double> &moduli    = changed.zone_moduli[c];
+        const std::vector<double> &densities = changed.zone_densities[c];
         if (moduli != components[c]->zone_moduli() ||
             densities != components[c]->zone_densities())
           components[c]->set_zone_materials(moduli, densities);
       }
-    interface->set_friction_coefficient(
-      changed.contact_pairs[0].friction_coefficient);
+    interface->set_friction_coefficient(changed.friction_coefficients[0]);
     interface->set_gap_offset(
       gap_parameter >= 0 ? values[gap_parameter] - nominal_gap : 0.);
     const double load_factor =

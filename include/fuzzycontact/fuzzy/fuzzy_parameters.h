@@ -14,7 +14,9 @@
 //
 // Every name must be a quantity of the scene (scene_quantity.h); the support
 // of each fuzzy number must be admissible for it (a modulus stays positive,
-// a friction coefficient non-negative).
+// a friction coefficient non-negative), and no two parameters may set the
+// same value of the scene (P1.E and P1.root.E both set the modulus of zone
+// root).
 
 #ifndef fuzzycontact_fuzzy_fuzzy_parameters_h
 #define fuzzycontact_fuzzy_fuzzy_parameters_h
@@ -22,6 +24,7 @@
 #include <fuzzycontact/fuzzy/fuzzy_number.h>
 #include <fuzzycontact/scene/scene.h>
 #include <fuzzycontact/scene/scene_quantity.h>
+#include <fuzzycontact/scene/scene_state.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -58,9 +61,13 @@ namespace FuzzyContact
     std::vector<std::string>
     names() const;
 
-    /** @p scene with parameter i set to values[i]. */
-    Scene
-    apply(const Scene &scene, const std::vector<double> &values) const;
+    /**
+     * The nominal state of @p scene with parameter i set to values[i]:
+     * the one binding of fuzzy parameter values to a scene, from which every
+     * model of a study is set.
+     */
+    SceneState
+    state(const Scene &scene, const std::vector<double> &values) const;
 
   private:
     std::vector<std::string>    names_;

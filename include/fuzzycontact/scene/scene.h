@@ -135,6 +135,13 @@ namespace FuzzyContact
     /** Index of the zone called @p zone_name; throws if there is none. */
     unsigned int
     zone_index(const std::string &zone_name) const;
+
+    /**
+     * Area of zone @p z [m^2]: its rectangle clipped to the component (the
+     * zones tile the component, see MaterialZone).
+     */
+    double
+    zone_area(const unsigned int z) const;
   };
 
   /**
