@@ -27,6 +27,324 @@ namespace FuzzyContact
       const std::vector<double> v = Input::to_doubles(text, what, 2);
       return {{v[0], v[1]}};
     }
+
+
+    // The entries of one component, its zones and its loads.
+    void
+    declare_component(ParameterHandler           &prm,
+                      const ComponentDescription &component)
+    {
+      prm.enter_subsection(component_section(component.name));
+      prm.declare_entry("lower left corner",
+                        "0, 0",
+                        Patterns::List(Patterns::Double(), 2, 2),
+                        "x, y of the lower left corner [m].",
+                        /*has_to_be_set=*/true);
+      prm.declare_entry("upper right corner",
+                        "1, 1",
+                        Patterns::List(Patterns::Double(), 2, 2),
+                        "x, y of the upper right corner [m].",
+                        /*has_to_be_set=*/true);
+      prm.declare_entry("subdivisions",
+                        "1, 1",
+                        Patterns::List(Patterns::Integer(), 2, 2),
+                        "Number of cells along x and along y.",
+                        /*has_to_be_set=*/true);
+      prm.declare_entry("fe degree",
+                        "2",
+                        Patterns::Integer(),
+                        "Polynomial degree of the FE_Q displacement "
+                        "element (1 to 4).");
+      prm.declare_entry("thickness",
+                        "1",
+                        Patterns::Double(),
+                        "Out-of-plane thickness t [m].");
+      prm.declare_entry("E",
+                        "210e9",
+                        Patterns::Double(),
+                        "Young's modulus [Pa] of zones that do not set "
+                        "their own.");
+      prm.declare_entry("nu",
+                        "0.3",
+                        Patterns::Double(),
+                        "Poisson's ratio of zones that do not set their "
+                        "own.");
+      prm.declare_entry("rho",
+                        "7900",
+                        Patterns::Double(),
+                        "Density [kg/m^3] of zones that do not set their "
+                        "own.");
+      prm.declare_entry("clamped faces",
+                        "",
+                        Patterns::List(Patterns::Selection(face_names), 0, 4),
+                        "Faces whose displacements are zero.");
+      prm.declare_entry("zones",
+                        "",
+                        Patterns::Anything(),
+                        "Comma-separated names of material zones, each "
+                        "with a subsection 'Zone <name>'. Empty: the whole "
+                        "component is one zone called 'body'.");
+      prm.declare_entry("loads",
+                        "",
+                        Patterns::Anything(),
+                        "Comma-separated names of edge loads, each with a "
+                        "subsection 'Load <name>'.");
+
+      if (!component.implicit_zone)
+        for (const MaterialZone &zone : component.zones)
+          {
+            prm.enter_subsection("Zone " + zone.name);
+            prm.declare_entry("x range",
+                              "",
+                              Patterns::Anything(),
+                              "x_min, x_max of the zone [m]; empty: the "
+                              "whole length.");
+            prm.declare_entry("y range",
+                              "",
+                              Patterns::Anything(),
+                              "y_min, y_max of the zone [m]; empty: the "
+                              "whole height.");
+            prm.declare_entry("E",
+                              "",
+                              Patterns::Anything(),
+                              "Young's modulus [Pa]; empty: the component's.");
+            prm.declare_entry("nu",
+                              "",
+                              Patterns::Anything(),
+                              "Poisson's ratio; empty: the component's.");
+            prm.declare_entry("rho",
+                              "",
+                              Patterns::Anything(),
+                              "Density [kg/m^3]; empty: the component's.");
+            prm.leave_subsection();
+          }
+
+      for (const EdgeLoad &load : component.loads)
+        {
+          prm.enter_subsection("Load " + load.name);
+          prm.declare_entry("face",
+                            "right",
+                            Patterns::Selection(face_names),
+                            "Face that carries the load.");
+          prm.declare_entry("total force",
+                            "0",
+                            Patterns::Double(),
+                            "Resultant of the load [N], spread uniformly "
+                            "over the face.");
+          prm.declare_entry("direction",
+                            "0, -1",
+                            Patterns::List(Patterns::Double(), 2, 2),
+                            "Direction of the resultant (normalised).");
+          prm.leave_subsection();
+        }
+      prm.leave_subsection();
+    }
+
+
+    // The entries of one contact pair.
+    void
+    declare_contact_pair(ParameterHandler             &prm,
+                         const ContactPairDescription &pair)
+    {
+      prm.enter_subsection("Contact " + pair.name);
+      prm.declare_entry("slave component",
+                        "",
+                        Patterns::Anything(),
+                        "Component whose face nodes are the slave nodes.",
+                        /*has_to_be_set=*/true);
+      prm.declare_entry("slave face",
+                        "bottom",
+                        Patterns::Selection(face_names),
+                        "Face of the slave component.");
+      prm.declare_entry("master component",
+                        "",
+                        Patterns::Anything(),
+                        "Component whose face the slave nodes touch.",
+                        /*has_to_be_set=*/true);
+      prm.declare_entry("master face",
+                        "top",
+                        Patterns::Selection(face_names),
+                        "Face of the master component.");
+      prm.declare_entry("friction coefficient",
+                        "0",
+                        Patterns::Double(),
+                        "Coulomb friction coefficient mu (>= 0).");
+      prm.declare_entry("initial gap",
+                        "auto",
+                        Patterns::Anything(),
+                        "Normal gap [m] of every slave node before "
+                        "loading, or 'auto' to measure it from the "
+                        "geometry.");
+      prm.leave_subsection();
+    }
+
+
+    // The material zones of a component (one implicit zone over all of it
+    // if the file lists none), with the component's material as default.
+    void
+    parse_zones(ParameterHandler     &prm,
+                ComponentDescription &component,
+                const std::string    &where,
+                const double          E,
+                const double          nu,
+                const double          rho)
+    {
+      if (component.zones.empty() || component.implicit_zone)
+        {
+          // One implicit zone over everything, with the component's
+          // material.
+          component.implicit_zone = true;
+          component.zones         = {
+                    MaterialZone{"body",
+                         {{component.lower_left[0], component.upper_right[0]}},
+                         {{component.lower_left[1], component.upper_right[1]}},
+                         E,
+                         nu,
+                         rho}};
+        }
+      else
+        for (MaterialZone &zone : component.zones)
+          {
+            const std::string zwhere = where + ", zone " + zone.name;
+            prm.enter_subsection("Zone " + zone.name);
+            const auto range_or_all =
+              [&](const std::string &key, const double lo, const double hi) {
+                const std::string text = Utilities::trim(prm.get(key));
+                if (text.empty())
+                  return std::array<double, 2>{{lo, hi}};
+                const auto r = read_pair(text, zwhere + ": " + key);
+                AssertThrow(r[0] < r[1],
+                            ExcMessage(zwhere + ": " + key +
+                                       " must be increasing, got <" + text +
+                                       ">."));
+                return r;
+              };
+            zone.x_range        = range_or_all("x range",
+                                        component.lower_left[0],
+                                        component.upper_right[0]);
+            zone.y_range        = range_or_all("y range",
+                                        component.lower_left[1],
+                                        component.upper_right[1]);
+            const auto value_or = [&](const std::string &key,
+                                      const double       fallback) {
+              const std::string text = Utilities::trim(prm.get(key));
+              return text.empty() ? fallback
+                                  : Input::to_double(text, zwhere + ": " + key);
+            };
+            zone.youngs_modulus = value_or("E", E);
+            zone.poissons_ratio = value_or("nu", nu);
+            zone.density        = value_or("rho", rho);
+            prm.leave_subsection();
+          }
+    }
+
+
+    // The edge loads of a component.
+    void
+    parse_loads(ParameterHandler     &prm,
+                ComponentDescription &component,
+                const std::string    &where)
+    {
+      for (EdgeLoad &load : component.loads)
+        {
+          const std::string lwhere = where + ", load " + load.name;
+          prm.enter_subsection("Load " + load.name);
+          load.face = face_from_string(prm.get("face"), lwhere + ": face");
+          load.total_force = Input::finite(prm.get_double("total force"),
+                                           lwhere + ": total force");
+          const auto d =
+            read_pair(prm.get("direction"), lwhere + ": direction");
+          const double norm = std::hypot(d[0], d[1]);
+          AssertThrow(norm > 0,
+                      ExcMessage(lwhere +
+                                 ": direction must not be the zero vector."));
+          load.direction[0] = d[0] / norm;
+          load.direction[1] = d[1] / norm;
+          prm.leave_subsection();
+        }
+    }
+
+
+    // One component: its rectangle, mesh, element, material, clamps, zones
+    // and loads.
+    void
+    parse_component(ParameterHandler &prm, ComponentDescription &component)
+    {
+      const std::string where = "Component " + component.name;
+      prm.enter_subsection(component_section(component.name));
+
+      const auto lower =
+        read_pair(prm.get("lower left corner"), where + ": lower left corner");
+      const auto upper      = read_pair(prm.get("upper right corner"),
+                                   where + ": upper right corner");
+      component.lower_left  = Point<2>(lower[0], lower[1]);
+      component.upper_right = Point<2>(upper[0], upper[1]);
+
+      const std::vector<std::string> subdivisions =
+        Utilities::split_string_list(prm.get("subdivisions"), ',');
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          const int n = Utilities::string_to_int(subdivisions[d]);
+          AssertThrow(n >= 1,
+                      ExcMessage(where +
+                                 ": subdivisions must be positive integers, "
+                                 "got <" +
+                                 prm.get("subdivisions") + ">."));
+          component.subdivisions[d] = static_cast<unsigned int>(n);
+        }
+
+      const long degree = prm.get_integer("fe degree");
+      AssertThrow(degree >= 1 && degree <= 4,
+                  ExcMessage(where + ": fe degree must be 1, 2, 3 or 4, got " +
+                             std::to_string(degree) + "."));
+      component.fe_degree = static_cast<unsigned int>(degree);
+
+      component.thickness =
+        Input::positive(prm.get_double("thickness"), where + ": thickness");
+      const double E   = prm.get_double("E");
+      const double nu  = prm.get_double("nu");
+      const double rho = prm.get_double("rho");
+
+      component.clamped_faces.clear();
+      for (const std::string &f :
+           Utilities::split_string_list(prm.get("clamped faces"), ','))
+        {
+          const Face face = face_from_string(f, where + ": clamped faces");
+          for (const Face other : component.clamped_faces)
+            AssertThrow(other != face,
+                        ExcMessage(where + ": clamped faces lists <" + f +
+                                   "> twice."));
+          component.clamped_faces.push_back(face);
+        }
+      parse_zones(prm, component, where, E, nu, rho);
+      parse_loads(prm, component, where);
+      prm.leave_subsection();
+    }
+
+
+    // One contact pair.
+    void
+    parse_contact_pair(ParameterHandler &prm, ContactPairDescription &pair)
+    {
+      const std::string where = "Contact " + pair.name;
+      prm.enter_subsection("Contact " + pair.name);
+      pair.slave_component  = Utilities::trim(prm.get("slave component"));
+      pair.master_component = Utilities::trim(prm.get("master component"));
+      pair.slave_face =
+        face_from_string(prm.get("slave face"), where + ": slave face");
+      pair.master_face =
+        face_from_string(prm.get("master face"), where + ": master face");
+      pair.friction_coefficient =
+        Input::non_negative(prm.get_double("friction coefficient"),
+                            where + ": friction coefficient");
+      const std::string gap = Utilities::trim(prm.get("initial gap"));
+      pair.has_initial_gap  = (gap != "auto");
+      pair.initial_gap =
+        pair.has_initial_gap
+          ? Input::to_double(gap, where + ": initial gap (a number or auto)")
+          : 0.;
+      prm.leave_subsection();
+    }
   } // namespace
 
 
@@ -156,147 +474,9 @@ namespace FuzzyContact
     prm.leave_subsection();
 
     for (const ComponentDescription &component : components)
-      {
-        prm.enter_subsection(component_section(component.name));
-        prm.declare_entry("lower left corner",
-                          "0, 0",
-                          Patterns::List(Patterns::Double(), 2, 2),
-                          "x, y of the lower left corner [m].",
-                          /*has_to_be_set=*/true);
-        prm.declare_entry("upper right corner",
-                          "1, 1",
-                          Patterns::List(Patterns::Double(), 2, 2),
-                          "x, y of the upper right corner [m].",
-                          /*has_to_be_set=*/true);
-        prm.declare_entry("subdivisions",
-                          "1, 1",
-                          Patterns::List(Patterns::Integer(), 2, 2),
-                          "Number of cells along x and along y.",
-                          /*has_to_be_set=*/true);
-        prm.declare_entry("fe degree",
-                          "2",
-                          Patterns::Integer(),
-                          "Polynomial degree of the FE_Q displacement "
-                          "element (1 to 4).");
-        prm.declare_entry("thickness",
-                          "1",
-                          Patterns::Double(),
-                          "Out-of-plane thickness t [m].");
-        prm.declare_entry("E",
-                          "210e9",
-                          Patterns::Double(),
-                          "Young's modulus [Pa] of zones that do not set "
-                          "their own.");
-        prm.declare_entry("nu",
-                          "0.3",
-                          Patterns::Double(),
-                          "Poisson's ratio of zones that do not set their "
-                          "own.");
-        prm.declare_entry("rho",
-                          "7900",
-                          Patterns::Double(),
-                          "Density [kg/m^3] of zones that do not set their "
-                          "own.");
-        prm.declare_entry("clamped faces",
-                          "",
-                          Patterns::List(Patterns::Selection(face_names), 0, 4),
-                          "Faces whose displacements are zero.");
-        prm.declare_entry("zones",
-                          "",
-                          Patterns::Anything(),
-                          "Comma-separated names of material zones, each "
-                          "with a subsection 'Zone <name>'. Empty: the whole "
-                          "component is one zone called 'body'.");
-        prm.declare_entry("loads",
-                          "",
-                          Patterns::Anything(),
-                          "Comma-separated names of edge loads, each with a "
-                          "subsection 'Load <name>'.");
-
-        if (!component.implicit_zone)
-          for (const MaterialZone &zone : component.zones)
-            {
-              prm.enter_subsection("Zone " + zone.name);
-              prm.declare_entry("x range",
-                                "",
-                                Patterns::Anything(),
-                                "x_min, x_max of the zone [m]; empty: the "
-                                "whole length.");
-              prm.declare_entry("y range",
-                                "",
-                                Patterns::Anything(),
-                                "y_min, y_max of the zone [m]; empty: the "
-                                "whole height.");
-              prm.declare_entry(
-                "E",
-                "",
-                Patterns::Anything(),
-                "Young's modulus [Pa]; empty: the component's.");
-              prm.declare_entry("nu",
-                                "",
-                                Patterns::Anything(),
-                                "Poisson's ratio; empty: the component's.");
-              prm.declare_entry("rho",
-                                "",
-                                Patterns::Anything(),
-                                "Density [kg/m^3]; empty: the component's.");
-              prm.leave_subsection();
-            }
-
-        for (const EdgeLoad &load : component.loads)
-          {
-            prm.enter_subsection("Load " + load.name);
-            prm.declare_entry("face",
-                              "right",
-                              Patterns::Selection(face_names),
-                              "Face that carries the load.");
-            prm.declare_entry("total force",
-                              "0",
-                              Patterns::Double(),
-                              "Resultant of the load [N], spread uniformly "
-                              "over the face.");
-            prm.declare_entry("direction",
-                              "0, -1",
-                              Patterns::List(Patterns::Double(), 2, 2),
-                              "Direction of the resultant (normalised).");
-            prm.leave_subsection();
-          }
-        prm.leave_subsection();
-      }
-
+      declare_component(prm, component);
     for (const ContactPairDescription &pair : contact_pairs)
-      {
-        prm.enter_subsection("Contact " + pair.name);
-        prm.declare_entry("slave component",
-                          "",
-                          Patterns::Anything(),
-                          "Component whose face nodes are the slave nodes.",
-                          /*has_to_be_set=*/true);
-        prm.declare_entry("slave face",
-                          "bottom",
-                          Patterns::Selection(face_names),
-                          "Face of the slave component.");
-        prm.declare_entry("master component",
-                          "",
-                          Patterns::Anything(),
-                          "Component whose face the slave nodes touch.",
-                          /*has_to_be_set=*/true);
-        prm.declare_entry("master face",
-                          "top",
-                          Patterns::Selection(face_names),
-                          "Face of the master component.");
-        prm.declare_entry("friction coefficient",
-                          "0",
-                          Patterns::Double(),
-                          "Coulomb friction coefficient mu (>= 0).");
-        prm.declare_entry("initial gap",
-                          "auto",
-                          Patterns::Anything(),
-                          "Normal gap [m] of every slave node before "
-                          "loading, or 'auto' to measure it from the "
-                          "geometry.");
-        prm.leave_subsection();
-      }
+      declare_contact_pair(prm, pair);
   }
 
 
@@ -379,145 +559,9 @@ namespace FuzzyContact
     prm.leave_subsection();
 
     for (ComponentDescription &component : components)
-      {
-        const std::string where = "Component " + component.name;
-        prm.enter_subsection(component_section(component.name));
-
-        const auto lower      = read_pair(prm.get("lower left corner"),
-                                     where + ": lower left corner");
-        const auto upper      = read_pair(prm.get("upper right corner"),
-                                     where + ": upper right corner");
-        component.lower_left  = Point<2>(lower[0], lower[1]);
-        component.upper_right = Point<2>(upper[0], upper[1]);
-
-        const std::vector<std::string> subdivisions =
-          Utilities::split_string_list(prm.get("subdivisions"), ',');
-        for (unsigned int d = 0; d < 2; ++d)
-          {
-            const int n = Utilities::string_to_int(subdivisions[d]);
-            AssertThrow(n >= 1,
-                        ExcMessage(where +
-                                   ": subdivisions must be positive integers, "
-                                   "got <" +
-                                   prm.get("subdivisions") + ">."));
-            component.subdivisions[d] = static_cast<unsigned int>(n);
-          }
-
-        const long degree = prm.get_integer("fe degree");
-        AssertThrow(degree >= 1 && degree <= 4,
-                    ExcMessage(where +
-                               ": fe degree must be 1, 2, 3 or 4, got " +
-                               std::to_string(degree) + "."));
-        component.fe_degree = static_cast<unsigned int>(degree);
-
-        component.thickness =
-          Input::positive(prm.get_double("thickness"), where + ": thickness");
-        const double E   = prm.get_double("E");
-        const double nu  = prm.get_double("nu");
-        const double rho = prm.get_double("rho");
-
-        component.clamped_faces.clear();
-        for (const std::string &f :
-             Utilities::split_string_list(prm.get("clamped faces"), ','))
-          {
-            const Face face = face_from_string(f, where + ": clamped faces");
-            for (const Face other : component.clamped_faces)
-              AssertThrow(other != face,
-                          ExcMessage(where + ": clamped faces lists <" + f +
-                                     "> twice."));
-            component.clamped_faces.push_back(face);
-          }
-
-        if (component.zones.empty() || component.implicit_zone)
-          {
-            // One implicit zone over everything, with the component's
-            // material.
-            component.implicit_zone = true;
-            component.zones         = {MaterialZone{
-              "body",
-              {{component.lower_left[0], component.upper_right[0]}},
-              {{component.lower_left[1], component.upper_right[1]}},
-              E,
-              nu,
-              rho}};
-          }
-        else
-          for (MaterialZone &zone : component.zones)
-            {
-              const std::string zwhere = where + ", zone " + zone.name;
-              prm.enter_subsection("Zone " + zone.name);
-              const auto range_or_all =
-                [&](const std::string &key, const double lo, const double hi) {
-                  const std::string text = Utilities::trim(prm.get(key));
-                  if (text.empty())
-                    return std::array<double, 2>{{lo, hi}};
-                  const auto r = read_pair(text, zwhere + ": " + key);
-                  AssertThrow(r[0] < r[1],
-                              ExcMessage(zwhere + ": " + key +
-                                         " must be increasing, got <" + text +
-                                         ">."));
-                  return r;
-                };
-              zone.x_range        = range_or_all("x range",
-                                          component.lower_left[0],
-                                          component.upper_right[0]);
-              zone.y_range        = range_or_all("y range",
-                                          component.lower_left[1],
-                                          component.upper_right[1]);
-              const auto value_or = [&](const std::string &key,
-                                        const double       fallback) {
-                const std::string text = Utilities::trim(prm.get(key));
-                return text.empty()
-                         ? fallback
-                         : Input::to_double(text, zwhere + ": " + key);
-              };
-              zone.youngs_modulus = value_or("E", E);
-              zone.poissons_ratio = value_or("nu", nu);
-              zone.density        = value_or("rho", rho);
-              prm.leave_subsection();
-            }
-
-        for (EdgeLoad &load : component.loads)
-          {
-            const std::string lwhere = where + ", load " + load.name;
-            prm.enter_subsection("Load " + load.name);
-            load.face = face_from_string(prm.get("face"), lwhere + ": face");
-            load.total_force = Input::finite(prm.get_double("total force"),
-                                             lwhere + ": total force");
-            const auto d =
-              read_pair(prm.get("direction"), lwhere + ": direction");
-            const double norm = std::hypot(d[0], d[1]);
-            AssertThrow(norm > 0,
-                        ExcMessage(lwhere +
-                                   ": direction must not be the zero vector."));
-            load.direction[0] = d[0] / norm;
-            load.direction[1] = d[1] / norm;
-            prm.leave_subsection();
-          }
-        prm.leave_subsection();
-      }
-
+      parse_component(prm, component);
     for (ContactPairDescription &pair : contact_pairs)
-      {
-        const std::string where = "Contact " + pair.name;
-        prm.enter_subsection("Contact " + pair.name);
-        pair.slave_component  = Utilities::trim(prm.get("slave component"));
-        pair.master_component = Utilities::trim(prm.get("master component"));
-        pair.slave_face =
-          face_from_string(prm.get("slave face"), where + ": slave face");
-        pair.master_face =
-          face_from_string(prm.get("master face"), where + ": master face");
-        pair.friction_coefficient =
-          Input::non_negative(prm.get_double("friction coefficient"),
-                              where + ": friction coefficient");
-        const std::string gap = Utilities::trim(prm.get("initial gap"));
-        pair.has_initial_gap  = (gap != "auto");
-        pair.initial_gap =
-          pair.has_initial_gap
-            ? Input::to_double(gap, where + ": initial gap (a number or auto)")
-            : 0.;
-        prm.leave_subsection();
-      }
+      parse_contact_pair(prm, pair);
 
     check();
   }
