@@ -19,15 +19,17 @@
 
 #include <fuzzycontact/base/input.h>
 #include <fuzzycontact/contact/active_set_solver.h>
-#include <fuzzycontact/contact/contact_interface.h>
-#include <fuzzycontact/contact/contact_problem.h>
 #include <fuzzycontact/contact/fl2c.h>
-#include <fuzzycontact/contact/full_order_contact.h>
-#include <fuzzycontact/fe/component.h>
 #include <fuzzycontact/modal/modal_solver.h>
 #include <fuzzycontact/output/output_files.h>
-#include <fuzzycontact/reduction/reduced_model.h>
+#include <fuzzycontact/output/report.h>
+#include <fuzzycontact/reanalysis/modal_reanalysis.h>
 #include <fuzzycontact/scene/scene.h>
+#include <fuzzycontact/scene/scene_state.h>
+#include <fuzzycontact/study/contact_scene.h>
+#include <fuzzycontact/study/full_order_model.h>
+#include <fuzzycontact/study/observations.h>
+#include <fuzzycontact/study/reduced_order_model.h>
 
 #include <deal.II/base/timer.h>
 
@@ -43,36 +45,31 @@ using namespace FuzzyContact;
 
 namespace
 {
-  std::ostringstream output;
+  Report report;
 
   void
   say(const std::string &text)
   {
-    std::cout << text << std::flush;
-    output << text;
+    report.say(text);
   }
 
   std::string
   sci(const double v, const int digits = 1)
   {
-    std::ostringstream s;
-    s << std::scientific << std::setprecision(digits) << v;
-    return s.str();
+    return Format::scientific(v, digits);
   }
 
   std::string
   fixed(const double v, const int digits = 0)
   {
-    std::ostringstream s;
-    s << std::fixed << std::setprecision(digits) << v;
-    return s.str();
+    return Format::fixed(v, digits);
   }
 
   // Median wall time of @p f over repeated calls (at least 3, and at least
   // 0.2 s in total); a call that alone takes longer than 0.2 s is timed
   // once.
   double
-  time_per_call(const std::function<void()> &f)
+  median_time_per_call(const std::function<void()> &f)
   {
     std::vector<double> times;
     Timer               total;
@@ -100,64 +97,58 @@ namespace
     return std::hypot(a[0] - b[0], a[1] - b[1]) / std::hypot(b[0], b[1]);
   }
 
+  // A scene's bodies, set to F = 50 kN (the scene's load) and mu = 0.3, and
+  // the slave node's displacements as outputs.
   struct Bodies
   {
-    Scene                                             scene;
-    std::vector<std::unique_ptr<Component>>           owned;
-    std::vector<const Component *>                    components;
-    std::unique_ptr<ContactInterface>                 interface;
-    ReportNodes                                       report;
-    std::vector<std::vector<types::global_dof_index>> observed;
+    ContactScene scene;
+    Observations outputs;
+    SceneState   state;
 
     Bodies(const std::string &file,
            const unsigned int refinements,
            const double       mu)
-        : scene(Scene::read(file))
+        : scene(Scene::read(file), refinements)
+        , outputs({"slave.ux", "slave.uy"}, scene)
+        , state(scene.scene())
     {
-      for (const ComponentDescription &d : scene.components)
-        {
-          owned.push_back(
-            std::make_unique<Component>(d, scene.plane_model, refinements));
-          components.push_back(owned.back().get());
-        }
-      interface = std::make_unique<ContactInterface>(scene, components);
-      interface->set_friction_coefficient(mu);
-      unsigned int best = 0;
-      for (unsigned int k = 1; k < interface->n_nodes(); ++k)
-        if (interface->node(k).tangent * interface->node(k).slave.position >
-            interface->node(best).tangent *
-              interface->node(best).slave.position)
-          best = k;
-      report = interface->report_nodes(best);
-      observed.resize(components.size());
-      for (const FaceNode *node :
-           {&report.slave, &report.master[0], &report.master[1]})
-        for (unsigned int d = 0; d < 2; ++d)
-          observed[node->component].push_back(node->dofs[d]);
+      for (double &m : state.friction_coefficients)
+        m = mu;
+    }
+
+    std::array<double, 2>
+    slave(const ContactSolution &s) const
+    {
+      const std::vector<double> u = outputs.values(s);
+      return {{u[0], u[1]}};
     }
   };
 
   struct FullReference
   {
-    ContactSolution solution;
-    double          cold, warm;
+    ContactSolution       solution;
+    std::array<double, 2> slave;
+    double                cold, warm;
   };
 
   FullReference
-  full_reference(const Bodies &bodies)
+  full_reference(Bodies &bodies)
   {
     FullReference r;
     {
-      FullOrderContact full(bodies.components, *bodies.interface);
-      r.solution = full.solve(&bodies.report);
+      FullOrderModel full(bodies.scene, bodies.outputs.dofs());
+      full.set_state(bodies.state);
+      r.solution = full.solve();
+      r.slave    = bodies.slave(r.solution);
       r.cold     = r.solution.time;
-      r.warm     = time_per_call([&]() {
-        full.solve(&bodies.report);
+      r.warm     = median_time_per_call([&]() {
+        full.solver().solve();
       });
     }
     // A second cold solve, to see the spread.
-    FullOrderContact again(bodies.components, *bodies.interface);
-    r.cold = std::min(r.cold, again.solve(&bodies.report).time);
+    FullOrderModel again(bodies.scene, bodies.outputs.dofs());
+    again.set_state(bodies.state);
+    r.cold = std::min(r.cold, again.solve().time);
     return r;
   }
 
@@ -166,36 +157,21 @@ namespace
   {
     ModalParameters parameters;
     parameters.n_modes = n;
-    Timer                   t;
-    std::vector<ModalBasis> bases;
-    for (const Component *c : bodies.components)
-      bases.push_back(
-        ModalSolver(parameters)
-          .solve(c->stiffness_matrix(), c->mass_matrix(), c->name()));
+    Timer                         t;
+    const std::vector<ModalBasis> bases =
+      component_modes(bodies.scene, parameters);
     time = t.wall_time();
     return bases;
-  }
-
-  ModalBasis
-  truncated(const ModalBasis &basis, const unsigned int n)
-  {
-    ModalBasis b;
-    b.eigenvalues.assign(basis.eigenvalues.begin(),
-                         basis.eigenvalues.begin() + n);
-    b.modes.assign(basis.modes.begin(), basis.modes.begin() + n);
-    b.residuals.assign(basis.residuals.begin(), basis.residuals.begin() + n);
-    return b;
   }
 
   // A reduced model of the bodies on the given bases; times of the static
   // correction (with the projections) and of forming W.
   struct Model
   {
-    std::vector<std::unique_ptr<ReducedComponent>> components;
-    std::unique_ptr<ReducedContactModel>           model;
-    double                                         reduction_time = 0;
-    double                                         w_time         = 0;
-    unsigned int                                   size           = 0;
+    std::unique_ptr<ReducedOrderModel> model;
+    double                             reduction_time = 0;
+    double                             w_time         = 0;
+    unsigned int                       size           = 0;
   };
 
   std::unique_ptr<Model>
@@ -203,51 +179,44 @@ namespace
          const std::vector<ModalBasis> &bases,
          const bool                     corrected)
   {
-    auto                                  m = std::make_unique<Model>();
-    std::vector<ReducedComponentMatrices> matrices;
-    Timer                                 t;
-    for (unsigned int c = 0; c < bodies.components.size(); ++c)
-      {
-        m->components.push_back(
-          std::make_unique<ReducedComponent>(*bodies.components[c],
-                                             bases[c],
-                                             bodies.interface->contact_dofs(c),
-                                             corrected));
-        m->size = std::max(m->size, m->components.back()->size());
-        matrices.push_back(
-          m->components.back()->matrices(bodies.interface->gap_operator(c),
-                                         bodies.observed[c]));
-      }
-    m->reduction_time = t.wall_time();
-    t.restart();
-    m->model = std::make_unique<ReducedContactModel>(
-      std::move(matrices),
-      bodies.interface->initial_gaps(),
-      bodies.interface->friction_coefficients());
-    m->w_time = t.wall_time();
+    auto        m = std::make_unique<Model>();
+    TimerOutput timer(std::cout, TimerOutput::never, TimerOutput::wall_times);
+    ReducedModelSettings settings;
+    settings.static_correction = corrected;
+    m->model =
+      std::make_unique<ReducedOrderModel>(bodies.scene,
+                                          bases,
+                                          bodies.outputs.dofs(),
+                                          std::vector<VaryingQuantity>(),
+                                          settings,
+                                          &timer);
+    m->model->set_state(bodies.state);
+    const auto t = timer.get_summary_data(TimerOutput::total_wall_time);
+    m->reduction_time =
+      t.at("static correction modes") + t.at("reduced matrices");
+    m->w_time = t.at("reduced contact flexibility");
+    for (unsigned int c = 0; c < bodies.scene.n_components(); ++c)
+      m->size =
+        std::max(m->size, m->model->n_modes(c) + m->model->n_corrections(c));
     return m;
   }
 
   // Solves with the exact solver (tolerance <= 0) or FL2C; returns the
   // solution and the median time per solve, or throws.
   std::pair<ContactSolution, double>
-  reduced_solve(const Model &m, const Bodies &bodies, const double tolerance)
+  reduced_solve(const Model &m, const double tolerance)
   {
     ContactSolution solution;
-    const auto      solve = [&]() {
-      ContactState state;
-      if (tolerance <= 0)
-        state = ActiveSetSolver().solve(m.model->problem(), 1, 1, "exact");
-      else
-        {
-          FL2CParameters parameters;
-          parameters.tolerance = tolerance;
-          state =
-            FL2CSolver(parameters).solve(m.model->problem(), 1, 1, "fl2c");
-        }
-      solution = m.model->solution(state, 1, &bodies.report, "");
+    FL2CParameters  parameters;
+    parameters.tolerance = tolerance;
+    const ActiveSetSolver exact;
+    const FL2CSolver      fl2c(parameters);
+    const ContactSolver  &solver =
+      tolerance <= 0 ? static_cast<const ContactSolver &>(exact) : fl2c;
+    const auto solve = [&]() {
+      solution = m.model->solve(solver);
     };
-    return {solution, time_per_call(solve)};
+    return {solution, median_time_per_call(solve)};
   }
 
 
@@ -260,20 +229,18 @@ namespace
         "static correction and the regulator tolerance\n");
     for (const std::string name : {"overlap", "stacked"})
       {
-        const Bodies        bodies(prm + "/" + name + ".prm", refinements, 0.3);
+        Bodies              bodies(prm + "/" + name + ".prm", refinements, 0.3);
         const FullReference ref                 = full_reference(bodies);
         double              modal_time          = 0;
         const std::vector<ModalBasis> all_modes = modes(bodies, 40, modal_time);
         std::ostringstream            out;
         out
-          << "\n### " << name << ": " << bodies.components[0]->n_dofs()
-          << " DoFs per component, " << bodies.interface->n_nodes()
+          << "\n### " << name << ": " << bodies.scene.n_dofs()[0]
+          << " DoFs per component, " << bodies.scene.interface().n_nodes()
           << " slave nodes, F = 50 kN, mu = 0.3\n\n"
           << "full_order: F_n = " << fixed(ref.solution.normal_force, 1)
-          << " N, slave (ux, uy) = ("
-          << sci(ref.solution.slave_displacement[0], 4) << ", "
-          << sci(ref.solution.slave_displacement[1], 4) << ") m; one solve "
-          << sci(ref.cold, 2)
+          << " N, slave (ux, uy) = (" << sci(ref.slave[0], 4) << ", "
+          << sci(ref.slave[1], 4) << ") m; one solve " << sci(ref.cold, 2)
           << " s cold (factorisations, columns of W, displacements), "
           << sci(ref.warm, 2)
           << " s warm (same stiffness). 40 modes per component: "
@@ -287,7 +254,7 @@ namespace
           {
             std::vector<ModalBasis> bases;
             for (const ModalBasis &b : all_modes)
-              bases.push_back(truncated(b, n));
+              bases.push_back(leading_modes(b, n));
             for (const bool corrected : {false, true})
               {
                 const auto          model = reduce(bodies, bases, corrected);
@@ -305,12 +272,11 @@ namespace
                         << " | ";
                     try
                       {
-                        const auto [s, t] = reduced_solve(*model, bodies, tol);
+                        const auto [s, t] = reduced_solve(*model, tol);
                         row << sci(relative(s.normal_force,
                                             ref.solution.normal_force))
                             << " | "
-                            << sci(relative(s.slave_displacement,
-                                            ref.solution.slave_displacement))
+                            << sci(relative(bodies.slave(s), ref.slave))
                             << " | " << s.iterations << " | " << sci(t, 2)
                             << " | " << fixed(ref.cold / t) << " | "
                             << fixed(ref.warm / t) << " |\n";
@@ -344,29 +310,29 @@ namespace
     for (const std::string name : {"overlap", "stacked"})
       for (const unsigned int r : levels)
         {
-          const Bodies        bodies(prm + "/" + name + ".prm", r, 0.3);
+          Bodies              bodies(prm + "/" + name + ".prm", r, 0.3);
           const FullReference ref             = full_reference(bodies);
           double              modal_time      = 0;
           const std::vector<ModalBasis> bases = modes(bodies, 9, modal_time);
           const auto                    modal = reduce(bodies, bases, false);
           // The static correction stores K^{-1} for every contact DoF: skip
           // it where that needs more than about 2 GB.
-          const double bytes = 8. * bodies.components[0]->n_dofs() *
-                               bodies.interface->n_rows() * 2;
+          const double bytes = 8. * bodies.scene.n_dofs()[0] *
+                               bodies.scene.interface().n_rows() * 2;
           const bool             with_correction = bytes < 2e9;
           std::unique_ptr<Model> corrected;
           if (with_correction)
             corrected = reduce(bodies, bases, true);
 
-          const auto [fm, t_fm] = reduced_solve(*modal, bodies, 1e-4);
+          const auto [fm, t_fm] = reduced_solve(*modal, 1e-4);
           std::ostringstream row;
-          row << "| " << name << " | " << bodies.components[0]->n_dofs()
-              << " | " << sci(ref.cold, 2) << " | " << sci(ref.warm, 2) << " | "
+          row << "| " << name << " | " << bodies.scene.n_dofs()[0] << " | "
+              << sci(ref.cold, 2) << " | " << sci(ref.warm, 2) << " | "
               << fixed(modal_time, 2) << " | ";
           if (with_correction)
             {
-              const auto [re, t_re] = reduced_solve(*corrected, bodies, 0);
-              const auto [fc, t_fc] = reduced_solve(*corrected, bodies, 1e-4);
+              const auto [re, t_re] = reduced_solve(*corrected, 0);
+              const auto [fc, t_fc] = reduced_solve(*corrected, 1e-4);
               row << fixed(corrected->reduction_time, 1) << " + "
                   << fixed(corrected->w_time, 2) << " | " << sci(t_re, 2)
                   << " | " << sci(t_fc, 2) << " | " << sci(t_fm, 2) << " | "
@@ -401,7 +367,7 @@ main(int argc, char **argv)
           "mesh.\n");
       part_a(prm, quick);
       part_b(prm, quick);
-      write_file_atomically("contact_benchmark.md", output.str());
+      write_file_atomically("contact_benchmark.md", report.text());
       std::cout << "\nWrote contact_benchmark.md" << std::endl;
     }
   catch (const dealii::ExceptionBase &e)

@@ -25,6 +25,25 @@ fuzzycontact_program_test(step-3.zero_load step-3 overlap
   "-DEDIT_TO=set load = 0"
   -DJSON_CHECKS=${CMAKE_CURRENT_SOURCE_DIR}/check_step-3_zero_load.cmake)
 
+# Two contact pairs with the scene's own friction (lower: 0, upper: 0.5)
+# and per-pair outputs chosen in the .prm.
+fuzzycontact_program_test(step-3.three_beams step-3 three-beams
+  -DEXPECT=success
+  ${step3_coarse}
+  -DEDIT_FILE=step
+  "-DEDIT_FROM=set scenes                  = overlap.prm, stacked.prm"
+  "-DEDIT_TO=set scenes = three-beams.prm"
+  -DEDIT3_FILE=step
+  "-DEDIT3_FROM=set paper scene             = overlap.prm"
+  "-DEDIT3_TO=set paper scene ="
+  -DEDIT4_FILE=step
+  "-DEDIT4_FROM=set friction coefficients   = 0, 0.3"
+  "-DEDIT4_TO=set friction coefficients = scene"
+  -DEDIT5_FILE=step
+  "-DEDIT5_FROM=set outputs                 = slave.ux, slave.uy, master1.ux, master1.uy, master2.ux, master2.uy, Fn, Ft"
+  "-DEDIT5_TO=set outputs = lower.Fn, lower.Ft, upper.Fn, upper.Ft, upper.max_pressure, upper.contact_length, P3.node(0.1, 0.016).uy"
+  -DJSON_CHECKS=${CMAKE_CURRENT_SOURCE_DIR}/check_step-3_three_beams.cmake)
+
 # Each case edits one line of prm/step-3.prm (step) or prm/overlap.prm
 # (scene).
 set(step3_bad_inputs
@@ -34,7 +53,9 @@ set(step3_bad_inputs
   "negative_friction_in_scene|scene|set friction coefficient = 0.3|set friction coefficient = -0.3|Contact interface: friction coefficient must not be negative"
   "initial_penetration|scene|set initial gap          = auto|set initial gap = -1e-3|Contact interface: initial penetration of 0.001 m at the slave node"
   "transition_points_out_of_order|step|set gap points      = 1e-3, 5e-3, 1e-2|set gap points = 5e-3, 1e-3, 1e-2|FL2C: gap points / force points: the input transition points must satisfy 0 < p1 < p2 < p3, got 0.005, 0.001, 0.01"
-  "malformed_friction_list|step|set friction coefficients   = 0, 0.3|set friction coefficients = 0, x|friction coefficients: <x> is not a number")
+  "malformed_friction_list|step|set friction coefficients   = 0, 0.3|set friction coefficients = 0, x|friction coefficients: <x> is not a number"
+  "unknown_output|step|set outputs                 = slave.ux|set outputs = slave.uz|outputs: <slave.uz>: not an output"
+  "output_of_no_component|step|set outputs                 = slave.ux|set outputs = P5.node(0, 0).ux|outputs: <P5.node.0, 0..ux>: the scene has no component <P5> .its components: P1, P2.")
 fuzzycontact_bad_input_tests(step-3 overlap "${step3_bad_inputs}"
   -DEXTRA_FILES=${CMAKE_SOURCE_DIR}/prm/stacked.prm)
 

@@ -21,6 +21,29 @@ fuzzycontact_program_test(step-4.quick_run step-4 overlap
   -DEXPECT=success
   -DJSON_CHECKS=${CMAKE_CURRENT_SOURCE_DIR}/check_step-4.cmake)
 
+# Two contact pairs of different friction, a fuzzy modulus and a fuzzy load
+# on the upper beam (beside the middle beam's load), per-pair outputs: the
+# exact reference keeps each pair's friction coefficient.
+add_test(NAME step-4.three_beams
+  COMMAND ${CMAKE_COMMAND}
+    -DPROGRAM=$<TARGET_FILE:step-4>
+    -DPRM=${CMAKE_SOURCE_DIR}/prm/step-4-three-beams.prm
+    -DSCENE=${CMAKE_SOURCE_DIR}/prm/three-beams.prm
+    -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/work/step-4.three_beams
+    -DOUTPUT=step-4-three-beams-output
+    "-DEDIT_FILE=step"
+    "-DEDIT_FROM=set mesh refinements       = 2"
+    "-DEDIT_TO=set mesh refinements       = 0"
+    "-DEDIT2_FILE=step"
+    "-DEDIT2_FROM=set number of alpha levels = 6"
+    "-DEDIT2_TO=set number of alpha levels = 3"
+    "-DEDIT3_FILE=step"
+    "-DEDIT3_FROM=set points per dimension = 4"
+    "-DEDIT3_TO=set points per dimension = 3"
+    -DEXPECT=success
+    -DJSON_CHECKS=${CMAKE_CURRENT_SOURCE_DIR}/check_step-4_three_beams.cmake
+    -P ${CMAKE_CURRENT_SOURCE_DIR}/run_program.cmake)
+
 # Two MPI processes give the same bounds as one.
 add_test(NAME step-4.mpi_np2_same_as_np1
   COMMAND ${CMAKE_COMMAND}
@@ -46,7 +69,20 @@ set(step4_bad_inputs
   "subsection_of_no_parameter|step|P1.E, P2.E, P1.tip.force|P1.E, P1.tip.force|There is no such subsection to be entered: Fuzzy parameter P2.E"
   "unknown_key|step|set vertex method          = true|set vertex methods = true|No entry with name <vertex methods>"
   "negative_modulus_support|step|set values   = 0.95, 1, 1.05|set values = -0.95, 1, 1.05|P1.E must be positive"
-  "noisy_sensitivities|step|set finite difference step = 1e-4|set finite difference step = 1e-7|the finite difference step must be well above the response tolerance")
+  "noisy_sensitivities|step|set finite difference step = 1e-4|set finite difference step = 1e-7|the finite difference step must be well above the response tolerance"
+  "unknown_output|step|set outputs                = slave.ux, slave.uy, Fn, Ft|set outputs = slave.ux, P1.sigma|outputs: <P1.sigma>: not an output"
+  "output_outside|step|set outputs                = slave.ux, slave.uy, Fn, Ft|set outputs = P2.node(0.05, 0).uy|lies outside component P2"
+  "output_of_no_pair|step|set outputs                = slave.ux, slave.uy, Fn, Ft|set outputs = contact.Fn|the scene has no contact pair <contact> .its contact pairs: interface.")
+# Two fuzzy parameters that set the same modulus.
+fuzzycontact_program_test(step-4.bad_input.overlapping_parameters step-4 overlap
+  -DEXPECT=failure
+  -DEDIT_FILE=step
+  "-DEDIT_FROM=P1.E, P2.E, P1.tip.force"
+  "-DEDIT_TO=P1.E, P2.E, P1.body.E, P1.tip.force"
+  -DEDIT2_FILE=step
+  "-DEDIT2_FROM=subsection Fuzzy parameter P2.E"
+  "-DEDIT2_TO=subsection Fuzzy parameter P1.body.E\n  set values = 2e11, 2.1e11, 2.2e11\nend\nsubsection Fuzzy parameter P2.E"
+  "-DMESSAGE=fuzzy parameters: <P1.E> and <P1.body.E> set the same value of the scene")
 fuzzycontact_program_test(step-4.bad_input.unknown_parameter step-4 overlap
   -DEXPECT=failure
   -DEDIT_FILE=step

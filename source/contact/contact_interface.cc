@@ -126,6 +126,75 @@ namespace FuzzyContact
       s << "(" << p[0] << ", " << p[1] << ")";
       return s.str();
     }
+
+    // The master segments of face @p face of component @p master (index
+    // @p m), sorted along @p tau.
+    std::vector<MasterSegment>
+    master_segments_of(const Component    &master,
+                       const unsigned int  m,
+                       const Face          face,
+                       const Tensor<1, 2> &tau)
+    {
+      std::vector<MasterSegment> segments;
+      for (const auto &cell : master.dof_handler().active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              cell->face(f)->boundary_id() == static_cast<unsigned int>(face))
+            {
+              MasterSegment segment;
+              segment.nodes   = nodes_of_face(master, m, cell->face(f), tau);
+              segment.s_begin = tau * segment.nodes.front().position;
+              segment.s_end   = tau * segment.nodes.back().position;
+              segments.push_back(segment);
+            }
+      std::sort(segments.begin(),
+                segments.end(),
+                [](const MasterSegment &a, const MasterSegment &b) {
+                  return a.s_begin < b.s_begin;
+                });
+      Assert(!segments.empty(), ExcInternalError());
+      return segments;
+    }
+
+    // The nodes of face @p face of component @p slave (index @p s), keyed by
+    // their x DoF, with the length of face each stands for (the integral of
+    // its shape function along the face); returns the extent of the face
+    // along @p tau.
+    std::pair<double, double>
+    slave_nodes_of(const Component                             &slave,
+                   const unsigned int                           s,
+                   const Face                                   face,
+                   const Tensor<1, 2>                          &tau,
+                   std::map<types::global_dof_index, FaceNode> &nodes,
+                   std::map<types::global_dof_index, double>   &tributary)
+    {
+      const QGauss<1> quadrature(slave.fe().degree + 1);
+      double          begin = std::numeric_limits<double>::max();
+      double          end   = -begin;
+      for (const auto &cell : slave.dof_handler().active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              cell->face(f)->boundary_id() == static_cast<unsigned int>(face))
+            {
+              const std::vector<FaceNode> face_nodes =
+                nodes_of_face(slave, s, cell->face(f), tau);
+              const std::vector<double> ts = local_coordinates(face_nodes, tau);
+              const double length = face_nodes.front().position.distance(
+                face_nodes.back().position);
+              for (unsigned int k = 0; k < face_nodes.size(); ++k)
+                {
+                  nodes[face_nodes[k].dofs[0]] = face_nodes[k];
+                  double integral              = 0;
+                  for (unsigned int q = 0; q < quadrature.size(); ++q)
+                    integral += lagrange_values(ts, quadrature.point(q)[0])[k] *
+                                quadrature.weight(q);
+                  tributary[face_nodes[k].dofs[0]] += integral * length;
+                }
+              begin = std::min(begin, tau * face_nodes.front().position);
+              end   = std::max(end, tau * face_nodes.back().position);
+            }
+      return {begin, end};
+    }
   } // namespace
 
 
@@ -190,26 +259,8 @@ namespace FuzzyContact
                            ") cannot touch: their outward normals are not "
                            "opposite."));
 
-    // Master segments, sorted along tau.
-    std::vector<Segment> segments;
-    for (const auto &cell : master.dof_handler().active_cell_iterators())
-      for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary() &&
-            cell->face(f)->boundary_id() ==
-              static_cast<unsigned int>(pair.master_face))
-          {
-            Segment segment;
-            segment.nodes   = nodes_of_face(master, m, cell->face(f), tau);
-            segment.s_begin = tau * segment.nodes.front().position;
-            segment.s_end   = tau * segment.nodes.back().position;
-            segments.push_back(segment);
-          }
-    std::sort(segments.begin(),
-              segments.end(),
-              [](const Segment &a, const Segment &b) {
-                return a.s_begin < b.s_begin;
-              });
-    Assert(!segments.empty(), ExcInternalError());
+    const std::vector<MasterSegment> segments =
+      master_segments_of(master, m, pair.master_face, tau);
     const double master_begin = segments.front().s_begin;
     const double master_end   = segments.back().s_end;
     const double s_tolerance  = 1e-10 * (master_end - master_begin);
@@ -217,33 +268,8 @@ namespace FuzzyContact
     // Slave nodes with the length of slave face each stands for.
     std::map<types::global_dof_index, FaceNode> slave_nodes;
     std::map<types::global_dof_index, double>   tributary;
-    const QGauss<1> quadrature(slave.fe().degree + 1);
-    double          slave_begin = std::numeric_limits<double>::max();
-    double          slave_end   = -slave_begin;
-    for (const auto &cell : slave.dof_handler().active_cell_iterators())
-      for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary() &&
-            cell->face(f)->boundary_id() ==
-              static_cast<unsigned int>(pair.slave_face))
-          {
-            const std::vector<FaceNode> face_nodes =
-              nodes_of_face(slave, s, cell->face(f), tau);
-            const std::vector<double> ts = local_coordinates(face_nodes, tau);
-            const double              length =
-              face_nodes.front().position.distance(face_nodes.back().position);
-            for (unsigned int k = 0; k < face_nodes.size(); ++k)
-              {
-                slave_nodes[face_nodes[k].dofs[0]] = face_nodes[k];
-                double integral                    = 0;
-                for (unsigned int q = 0; q < quadrature.size(); ++q)
-                  integral += lagrange_values(ts, quadrature.point(q)[0])[k] *
-                              quadrature.weight(q);
-                tributary[face_nodes[k].dofs[0]] += integral * length;
-              }
-            slave_begin =
-              std::min(slave_begin, tau * face_nodes.front().position);
-            slave_end = std::max(slave_end, tau * face_nodes.back().position);
-          }
+    const auto [slave_begin, slave_end] =
+      slave_nodes_of(slave, s, pair.slave_face, tau, slave_nodes, tributary);
     slave_face_centre_.push_back(0.5 * (slave_begin + slave_end));
 
     const double tolerance = penetration_tolerance_[p];
@@ -257,7 +283,7 @@ namespace FuzzyContact
         const auto segment =
           std::find_if(segments.begin(),
                        segments.end(),
-                       [&](const Segment &seg) {
+                       [&](const MasterSegment &seg) {
                          return s_slave >= seg.s_begin - s_tolerance &&
                                 s_slave <= seg.s_end + s_tolerance;
                        });
@@ -455,38 +481,52 @@ namespace FuzzyContact
     return contact_dofs_[c];
   }
 
+  unsigned int
+  ContactInterface::n_pairs() const
+  {
+    return pair_names_.size();
+  }
+
+  const std::string &
+  ContactInterface::pair_name(const unsigned int pair) const
+  {
+    AssertIndexRange(pair, pair_names_.size());
+    return pair_names_[pair];
+  }
+
   Vector<double>
   ContactInterface::initial_gaps() const
   {
+    return initial_gaps(std::vector<double>(n_pairs(), 0.));
+  }
+
+  Vector<double>
+  ContactInterface::initial_gaps(const std::vector<double> &gap_offsets) const
+  {
+    AssertThrow(gap_offsets.size() == n_pairs(),
+                ExcMessage("ContactInterface: one gap offset per contact pair "
+                           "is expected."));
     Vector<double> g(n_rows());
     for (unsigned int k = 0; k < nodes_.size(); ++k)
-      g[2 * k] = nodes_[k].initial_gap + gap_offset_;
+      {
+        const ContactNode &node   = nodes_[k];
+        const double       offset = gap_offsets[node.pair];
+        AssertThrow(std::isfinite(offset),
+                    ExcMessage("Contact " + pair_names_[node.pair] +
+                               ": the gap offset must be a finite number."));
+        if (node.initial_gap + offset < -penetration_tolerance_[node.pair])
+          {
+            std::ostringstream message;
+            message << "Contact " << pair_names_[node.pair]
+                    << ": a gap offset of " << offset
+                    << " m makes the initial gap of the slave node "
+                    << point_string(node.slave.position) << " negative ("
+                    << node.initial_gap + offset << " m).";
+            AssertThrow(false, ExcMessage(message.str()));
+          }
+        g[2 * k] = node.initial_gap + offset;
+      }
     return g;
-  }
-
-  void
-  ContactInterface::set_gap_offset(const double offset)
-  {
-    AssertThrow(std::isfinite(offset),
-                ExcMessage("gap offset must be a finite number."));
-    for (const ContactNode &node : nodes_)
-      if (node.initial_gap + offset < -penetration_tolerance_[node.pair])
-        {
-          std::ostringstream message;
-          message << "Contact " << pair_names_[node.pair]
-                  << ": a gap offset of " << offset
-                  << " m makes the initial gap of the slave node "
-                  << point_string(node.slave.position) << " negative ("
-                  << node.initial_gap + offset << " m).";
-          AssertThrow(false, ExcMessage(message.str()));
-        }
-    gap_offset_ = offset;
-  }
-
-  double
-  ContactInterface::gap_offset() const
-  {
-    return gap_offset_;
   }
 
   std::vector<double>
@@ -498,12 +538,21 @@ namespace FuzzyContact
     return mu;
   }
 
-  void
-  ContactInterface::set_friction_coefficient(const double mu)
+  std::vector<double>
+  ContactInterface::friction_coefficients(
+    const std::vector<double> &per_pair) const
   {
-    Input::non_negative(mu, "friction coefficient");
-    for (ContactNode &node : nodes_)
-      node.friction_coefficient = mu;
+    AssertThrow(per_pair.size() == n_pairs(),
+                ExcMessage("ContactInterface: one friction coefficient per "
+                           "contact pair is expected."));
+    for (unsigned int p = 0; p < n_pairs(); ++p)
+      Input::non_negative(per_pair[p],
+                          "Contact " + pair_names_[p] +
+                            ": friction coefficient");
+    std::vector<double> mu;
+    for (const ContactNode &node : nodes_)
+      mu.push_back(per_pair[node.pair]);
+    return mu;
   }
 
   Vector<double>
@@ -552,27 +601,18 @@ namespace FuzzyContact
     return best;
   }
 
-  ReportNodes
-  ContactInterface::report_nodes(const unsigned int k) const
+  const std::vector<MasterSegment> &
+  ContactInterface::master_segments(const unsigned int pair) const
   {
-    const ContactNode          &node     = this->node(k);
-    const std::vector<Segment> &segments = segments_[node.pair];
-    const double                s        = node.tangent * node.projection;
-    const double                tolerance =
-      1e-10 * (segments.back().s_end - segments.front().s_begin);
-    const Segment *best = nullptr;
-    for (const Segment &segment : segments)
-      if (s >= segment.s_begin - tolerance && s <= segment.s_end + tolerance)
-        if (best == nullptr ||
-            std::abs(0.5 * (segment.s_begin + segment.s_end) -
-                     slave_face_centre_[node.pair]) <
-              std::abs(0.5 * (best->s_begin + best->s_end) -
-                       slave_face_centre_[node.pair]))
-          best = &segment;
-    Assert(best != nullptr, ExcInternalError());
-    return ReportNodes{k,
-                       node.slave,
-                       {{best->nodes.front(), best->nodes.back()}}};
+    AssertIndexRange(pair, segments_.size());
+    return segments_[pair];
+  }
+
+  double
+  ContactInterface::slave_face_centre(const unsigned int pair) const
+  {
+    AssertIndexRange(pair, slave_face_centre_.size());
+    return slave_face_centre_[pair];
   }
 
   double
@@ -580,17 +620,5 @@ namespace FuzzyContact
   {
     AssertIndexRange(pair, penetration_tolerance_.size());
     return penetration_tolerance_[pair];
-  }
-  unsigned int
-  ContactInterface::report_node() const
-  {
-    AssertThrow(n_nodes() > 0,
-                ExcMessage("The contact interface has no slave node."));
-    unsigned int slave = 0;
-    for (unsigned int k = 1; k < n_nodes(); ++k)
-      if (node(k).tangent * node(k).slave.position >
-          node(slave).tangent * node(slave).slave.position)
-        slave = k;
-    return slave;
   }
 } // namespace FuzzyContact

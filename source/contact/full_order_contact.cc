@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace FuzzyContact
 {
@@ -45,11 +46,47 @@ namespace FuzzyContact
       : components(components)
       , interface(interface)
       , solver(parameters)
+      , initial_gaps_(interface.initial_gaps())
+      , friction_(interface.friction_coefficients())
+      , observed_dofs(components.size())
       , factorized(components.size())
   {
     AssertThrow(components.size() == interface.n_components(),
                 ExcMessage("FullOrderContact: one component per component of "
                            "the contact interface is needed."));
+    for (const Component *component : components)
+      {
+        std::vector<double> declared, reference;
+        for (unsigned int l = 0; l < component->description().loads.size(); ++l)
+          {
+            declared.push_back(component->description().loads[l].total_force);
+            reference.push_back(component->reference_load_force(l));
+          }
+        load_forces_.push_back(declared);
+        reference_forces_.push_back(reference);
+      }
+  }
+
+  void
+  FullOrderContact::set_load_forces(
+    const std::vector<std::vector<double>> &load_forces)
+  {
+    AssertThrow(load_forces.size() == components.size(),
+                ExcMessage("FullOrderContact: one list of load forces per "
+                           "component is expected."));
+    for (unsigned int c = 0; c < components.size(); ++c)
+      {
+        AssertThrow(load_forces[c].size() == load_forces_[c].size(),
+                    ExcMessage("FullOrderContact: one force per load of "
+                               "component " +
+                               components[c]->name() + " is expected."));
+        for (const double f : load_forces[c])
+          AssertThrow(std::isfinite(f),
+                      ExcMessage("FullOrderContact: the load forces of "
+                                 "component " +
+                                 components[c]->name() + " must be finite."));
+      }
+    load_forces_ = load_forces;
   }
 
   void
@@ -60,10 +97,17 @@ namespace FuzzyContact
     load_factor_ = load_factor;
   }
 
-  double
-  FullOrderContact::load_factor() const
+  void
+  FullOrderContact::set_contact_conditions(
+    const Vector<double>      &initial_gaps,
+    const std::vector<double> &friction_coefficients)
   {
-    return load_factor_;
+    AssertThrow(initial_gaps.size() == interface.n_rows() &&
+                  friction_coefficients.size() == interface.n_nodes(),
+                ExcMessage("FullOrderContact: two gaps and one friction "
+                           "coefficient per slave node are expected."));
+    initial_gaps_ = initial_gaps;
+    friction_     = friction_coefficients;
   }
 
   void
@@ -88,13 +132,17 @@ namespace FuzzyContact
 
 
   void
-  FullOrderContact::observe(const ReportNodes &report)
+  FullOrderContact::observe(const ObservedDofs &dofs)
   {
-    std::vector<std::vector<types::global_dof_index>> dofs(components.size());
-    for (const FaceNode *node :
-         {&report.slave, &report.master[0], &report.master[1]})
-      for (unsigned int d = 0; d < 2; ++d)
-        dofs[node->component].push_back(node->dofs[d]);
+    AssertThrow(dofs.size() == components.size(),
+                ExcMessage("FullOrderContact: one list of observed DoFs per "
+                           "component is expected."));
+    for (unsigned int c = 0; c < components.size(); ++c)
+      for (const types::global_dof_index dof : dofs[c])
+        AssertThrow(dof < components[c]->n_dofs(),
+                    ExcMessage("FullOrderContact: an observed DoF does not "
+                               "exist in component " +
+                               components[c]->name() + "."));
     if (dofs == observed_dofs)
       return;
     // Columns computed for other DoFs would lack the values at these.
@@ -111,18 +159,45 @@ namespace FuzzyContact
   }
 
 
-  double
-  FullOrderContact::observed_displacement(const unsigned int            c,
-                                          const types::global_dof_index dof,
-                                          const Vector<double>         &p)
+  Vector<double>
+  FullOrderContact::load_vector(const unsigned int c) const
+  {
+    Vector<double> f(components[c]->n_dofs());
+    for (unsigned int l = 0; l < load_forces_[c].size(); ++l)
+      if (load_forces_[c][l] != 0)
+        f.add(load_forces_[c][l], components[c]->unit_load_vector(l));
+    return f;
+  }
+
+
+  Vector<double>
+  FullOrderContact::load_response(const unsigned int c) const
   {
     const Factorized &F = factorized[c];
-    const auto        position =
-      std::find(observed_dofs[c].begin(), observed_dofs[c].end(), dof) -
-      observed_dofs[c].begin();
-    Assert(position < static_cast<long>(observed_dofs[c].size()),
-           ExcInternalError());
-    double u = load_factor_ * F.free_solution[dof];
+    Vector<double>    u(components[c]->n_dofs());
+    for (unsigned int l = 0; l < F.load_responses.size(); ++l)
+      {
+        const double factor = load_forces_[c][l] / reference_forces_[c][l];
+        if (factor == 1)
+          u += F.load_responses[l];
+        else if (factor != 0)
+          u.add(factor, F.load_responses[l]);
+      }
+    return u;
+  }
+
+
+  double
+  FullOrderContact::observed_displacement(const unsigned int c,
+                                          const unsigned int position,
+                                          const types::global_dof_index dof,
+                                          const Vector<double>         &p) const
+  {
+    const Factorized &F = factorized[c];
+    double            u = 0;
+    for (unsigned int l = 0; l < F.load_responses.size(); ++l)
+      u += load_factor_ * (load_forces_[c][l] / reference_forces_[c][l]) *
+           F.load_responses[l][dof];
     for (unsigned int j = 0; j < p.size(); ++j)
       if (p[j] != 0 && !F.observed_columns[j].empty())
         u += p[j] * F.observed_columns[j][position];
@@ -158,11 +233,16 @@ namespace FuzzyContact
         F.inverse = std::make_unique<SparseDirectSolver>();
         F.inverse->factorize(components[c]->stiffness_matrix());
         ++factorizations;
-        F.moduli        = moduli;
-        F.scale         = 1;
-        F.free_solution = components[c]->load_vector();
-        F.inverse->solve(F.free_solution);
-        ++back_substitutions;
+        F.moduli = moduli;
+        F.scale  = 1;
+        F.load_responses.clear();
+        for (unsigned int l = 0; l < reference_forces_[c].size(); ++l)
+          {
+            Vector<double> u = components[c]->reference_load_vector(l);
+            F.inverse->solve(u);
+            ++back_substitutions;
+            F.load_responses.push_back(std::move(u));
+          }
         F.columns.clear();
         F.columns.resize(m);
         F.observed_columns.clear();
@@ -200,7 +280,7 @@ namespace FuzzyContact
             ++back_substitutions;
             F.columns[j] = std::make_unique<Vector<double>>(m);
             C.vmult(*F.columns[j], z);
-            if (c < observed_dofs.size() && !observed_dofs[c].empty())
+            if (!observed_dofs[c].empty())
               {
                 F.observed_columns[j].clear();
                 for (const types::global_dof_index dof : observed_dofs[c])
@@ -244,7 +324,7 @@ namespace FuzzyContact
     Vector<double> g(interface.n_rows());
     for (unsigned int c = 0; c < components.size(); ++c)
       {
-        Vector<double> u = factorized[c].free_solution;
+        Vector<double> u = load_response(c);
         u /= factorized[c].scale;
         interface.gap_operator(c).vmult_add(g, u);
       }
@@ -253,21 +333,16 @@ namespace FuzzyContact
 
 
   ContactSolution
-  FullOrderContact::solve(const ReportNodes *report)
+  FullOrderContact::solve()
   {
     Timer timer;
     update_factorizations();
-    if (report != nullptr)
-      observe(*report);
 
-    const Vector<double>      g_initial = interface.initial_gaps();
-    const Vector<double>      g_load    = load_gaps();
-    const std::vector<double> mu        = interface.friction_coefficients();
-    Flexibility               W(*this);
-
-    Vector<double>     last_g_previous;
-    const ContactState state = solve_in_load_steps(
-      g_initial,
+    const Vector<double> g_load = load_gaps();
+    Flexibility          W(*this);
+    Vector<double>       last_g_previous;
+    const ContactState   state = solve_in_load_steps(
+      initial_gaps_,
       g_load,
       load_factor_,
       n_load_steps_,
@@ -276,56 +351,57 @@ namespace FuzzyContact
         if (step.step == 1 && warm_start_ && last_state)
           start.previous = *last_state;
         last_g_previous = step.g_previous;
-        return solver.solve(W, start, mu, "full-order contact solver");
+        return solver.solve(W, start, friction_, "full-order contact solver");
       });
     last_state = state;
 
-    if (!displacement_fields_)
-      {
-        // Forces and residual from the active set solution on W; the report's
-        // displacements from the free solutions and the kept columns.
-        ContactSolution solution;
-        solution.solver       = "full_order";
-        solution.iterations   = state.iterations;
-        solution.n_load_steps = n_load_steps_;
-        solution.p            = state.p;
-        solution.g            = state.g;
-        solution.status       = state.status;
-        solution.residual     = state.residual;
-        if (report != nullptr)
-          {
-            for (unsigned int j = 0; j < state.p.size(); ++j)
-              if (state.p[j] != 0)
-                prepare_column(j);
-            for (unsigned int d = 0; d < 2; ++d)
-              {
-                solution.slave_displacement[d] =
-                  observed_displacement(report->slave.component,
-                                        report->slave.dofs[d],
-                                        state.p);
-                for (unsigned int i = 0; i < 2; ++i)
-                  solution.master_displacements[i][d] =
-                    observed_displacement(report->master[i].component,
-                                          report->master[i].dofs[d],
-                                          state.p);
-              }
-          }
-        solution.compute_totals();
-        solution.time = timer.wall_time();
-        return solution;
-      }
+    ContactSolution solution = displacement_fields_
+                                 ? with_fields(state, last_g_previous, W)
+                                 : outputs_only(state);
+    solution.solver          = "full_order";
+    solution.iterations      = state.iterations;
+    solution.n_load_steps    = n_load_steps_;
+    solution.compute_totals();
+    solution.time = timer.wall_time();
+    return solution;
+  }
 
-    // Displacements u_c = K_c^{-1} (lambda f_c + C_c^T p), and the residual
-    // of their own gaps g0 + C u. The columns of W carry the error of a
-    // plain back-substitution (up to 1e-9 relative on fine meshes, from the
-    // condition of K), so the forces are refined with the gaps of the
-    // accurately solved displacements: W's restriction to the final active
-    // set maps the remaining constraint violation to a force correction.
-    ContactState    final_state = state;
+
+  // Forces and residual from the active set solution on W; the observed
+  // displacements from the load responses and the kept columns.
+  ContactSolution
+  FullOrderContact::outputs_only(const ContactState &state)
+  {
     ContactSolution solution;
-    solution.solver       = "full_order";
-    solution.iterations   = state.iterations;
-    solution.n_load_steps = n_load_steps_;
+    solution.p        = state.p;
+    solution.g        = state.g;
+    solution.status   = state.status;
+    solution.residual = state.residual;
+    for (unsigned int j = 0; j < state.p.size(); ++j)
+      if (state.p[j] != 0)
+        prepare_column(j);
+    solution.observed.resize(components.size());
+    for (unsigned int c = 0; c < components.size(); ++c)
+      for (unsigned int i = 0; i < observed_dofs[c].size(); ++i)
+        solution.observed[c].push_back(
+          observed_displacement(c, i, observed_dofs[c][i], state.p));
+    return solution;
+  }
+
+
+  // Displacements u_c = K_c^{-1} (lambda f_c + C_c^T p), and the residual
+  // of their own gaps g0 + C u. The columns of W carry the error of a plain
+  // back-substitution (up to 1e-9 relative on fine meshes, from the
+  // condition of K), so the forces are refined with the gaps of the
+  // accurately solved displacements: W's restriction to the final active
+  // set maps the remaining constraint violation to a force correction.
+  ContactSolution
+  FullOrderContact::with_fields(const ContactState   &state,
+                                const Vector<double> &g_previous,
+                                FlexibilityOperator  &W)
+  {
+    ContactState        final_state = state;
+    ContactSolution     solution;
     std::vector<double> cn(interface.n_nodes(), 0), ct(interface.n_nodes(), 0);
     const std::function<double(unsigned int)> c_n = [&](const unsigned int k) {
       if (cn[k] == 0)
@@ -343,8 +419,8 @@ namespace FuzzyContact
         }
       return ct[k];
     };
-    Vector<double> g_free = g_initial;
-    g_free.add(load_factor_, g_load);
+    Vector<double> g_free = initial_gaps_;
+    g_free.add(load_factor_, load_gaps());
     for (unsigned int refinement = 0;; ++refinement)
       {
         solution.displacements.clear();
@@ -352,14 +428,17 @@ namespace FuzzyContact
           {
             Vector<double> rhs(components[c]->n_dofs());
             interface.gap_operator(c).Tvmult(rhs, final_state.p);
-            rhs.add(load_factor_, components[c]->load_vector());
+            rhs.add(load_factor_, load_vector(c));
             solution.displacements.push_back(accurate_solve(c, rhs));
           }
-        solution.g                  = interface.gaps(solution.displacements);
+        solution.g = initial_gaps_;
+        for (unsigned int c = 0; c < components.size(); ++c)
+          interface.gap_operator(c).vmult_add(solution.g,
+                                              solution.displacements[c]);
         const std::vector<double> r = complementarity_residuals(final_state.p,
                                                                 solution.g,
-                                                                last_g_previous,
-                                                                mu,
+                                                                g_previous,
+                                                                friction_,
                                                                 c_n,
                                                                 c_t);
         const double              worst = *std::max_element(r.begin(), r.end());
@@ -370,26 +449,16 @@ namespace FuzzyContact
           break;
         Vector<double> violation = solution.g;
         for (unsigned int k = 0; k < interface.n_nodes(); ++k)
-          violation[tangential_row(k)] -= last_g_previous[tangential_row(k)];
-        final_state.p += solver.correction(W, final_state, mu, violation);
+          violation[tangential_row(k)] -= g_previous[tangential_row(k)];
+        final_state.p +=
+          solver.correction(W, final_state, friction_, violation);
       }
     solution.p      = final_state.p;
     solution.status = final_state.status;
-
-    if (report != nullptr)
-      {
-        const auto &u = solution.displacements;
-        for (unsigned int d = 0; d < 2; ++d)
-          {
-            solution.slave_displacement[d] =
-              u[report->slave.component][report->slave.dofs[d]];
-            for (unsigned int i = 0; i < 2; ++i)
-              solution.master_displacements[i][d] =
-                u[report->master[i].component][report->master[i].dofs[d]];
-          }
-      }
-    solution.compute_totals();
-    solution.time = timer.wall_time();
+    solution.observed.resize(components.size());
+    for (unsigned int c = 0; c < components.size(); ++c)
+      for (const types::global_dof_index dof : observed_dofs[c])
+        solution.observed[c].push_back(solution.displacements[c][dof]);
     return solution;
   }
 

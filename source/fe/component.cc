@@ -561,6 +561,24 @@ namespace FuzzyContact
     return unit_loads_[l];
   }
 
+
+  double
+  Component::reference_load_force(const unsigned int l) const
+  {
+    AssertIndexRange(l, description_.loads.size());
+    const double declared = description_.loads[l].total_force;
+    return declared != 0 ? declared : 1.;
+  }
+
+
+  Vector<double>
+  Component::reference_load_vector(const unsigned int l) const
+  {
+    Vector<double> f = unit_load_vector(l);
+    f *= reference_load_force(l);
+    return f;
+  }
+
   const std::vector<Point<2>> &
   Component::support_points() const
   {

@@ -363,9 +363,13 @@ namespace FuzzyContact
     const std::vector<types::global_dof_index> &observed_dofs) const
   {
     ReducedComponentMatrices r;
-    r.stiffness     = K_r;
-    r.gap_operator  = project_rows(gap_operator);
-    r.load          = project(component.load_vector());
+    r.stiffness    = K_r;
+    r.gap_operator = project_rows(gap_operator);
+    for (unsigned int l = 0; l < component.description().loads.size(); ++l)
+      {
+        r.loads.push_back(project(component.reference_load_vector(l)));
+        r.reference_forces.push_back(component.reference_load_force(l));
+      }
     r.observed_dofs = observed_dofs;
     r.observation   = rows(observed_dofs);
     return r;
@@ -390,8 +394,41 @@ namespace FuzzyContact
       {
         variable[c].matrices = std::move(components[c]);
         compute_blocks(variable[c]);
+        load_forces.push_back(variable[c].matrices.reference_forces);
       }
     assemble_problem();
+  }
+
+
+  void
+  ReducedContactModel::set_load_forces(
+    const std::vector<std::vector<double>> &forces)
+  {
+    AssertThrow(forces.size() == variable.size(),
+                ExcMessage("ReducedContactModel: one list of load forces per "
+                           "component is expected."));
+    for (unsigned int c = 0; c < forces.size(); ++c)
+      {
+        AssertThrow(forces[c].size() == load_forces[c].size(),
+                    ExcMessage("ReducedContactModel: one force per load of "
+                               "each component is expected."));
+        for (const double f : forces[c])
+          AssertThrow(std::isfinite(f),
+                      ExcMessage("ReducedContactModel: load forces must be "
+                                 "finite."));
+      }
+    if (forces == load_forces)
+      return;
+    load_forces = forces;
+    assemble_load_gaps();
+  }
+
+
+  double
+  ReducedContactModel::load_factor(const unsigned int c,
+                                   const unsigned int l) const
+  {
+    return load_forces[c][l] / variable[c].matrices.reference_forces[l];
   }
 
 
@@ -401,8 +438,11 @@ namespace FuzzyContact
     const unsigned int              m = problem_.g_initial.size();
     const ReducedComponentMatrices &r = part.matrices;
     const unsigned int              k = r.stiffness.m();
+    bool loads_fit = r.loads.size() == r.reference_forces.size();
+    for (const Vector<double> &f : r.loads)
+      loads_fit = loads_fit && f.size() == k;
     AssertThrow(r.stiffness.n() == k && r.gap_operator.m() == m &&
-                  r.gap_operator.n() == k && r.load.size() == k &&
+                  r.gap_operator.n() == k && loads_fit &&
                   r.observation.m() == r.observed_dofs.size() &&
                   (r.observed_dofs.empty() || r.observation.n() == k),
                 ExcMessage("ReducedContactModel: the reduced matrices of a "
@@ -431,20 +471,24 @@ namespace FuzzyContact
         Wc(i, j) = Wc(j, i) = 0.5 * (Wc(i, j) + Wc(j, i));
     part.flexibility = std::move(Wc);
 
-    Vector<double> q = r.load;
-    factor.solve(q);
-    part.load_gaps.reinit(m);
-    r.gap_operator.vmult(part.load_gaps, q);
-
     // Recovery of the observed displacements without a reduced solve:
     // u_obs = lambda O K_r^{-1} f_r + (O K_r^{-1} C_r^T) p.
     const unsigned int n_obs = r.observed_dofs.size();
     part.observation_flexibility.reinit(n_obs, m);
-    part.observation_load.reinit(n_obs);
     if (n_obs > 0)
+      r.observation.mmult(part.observation_flexibility, Yf);
+    part.load_gaps.clear();
+    part.observation_loads.clear();
+    for (const Vector<double> &f : r.loads)
       {
-        r.observation.mmult(part.observation_flexibility, Yf);
-        r.observation.vmult(part.observation_load, q);
+        Vector<double> q = f;
+        factor.solve(q);
+        Vector<double> g(m), u(n_obs);
+        r.gap_operator.vmult(g, q);
+        if (n_obs > 0)
+          r.observation.vmult(u, q);
+        part.load_gaps.push_back(std::move(g));
+        part.observation_loads.push_back(std::move(u));
       }
     part.present = true;
   }
@@ -455,14 +499,27 @@ namespace FuzzyContact
   {
     const unsigned int m = problem_.g_initial.size();
     problem_.W.reinit(m, m);
-    problem_.g_load.reinit(m);
     for (unsigned int c = 0; c < variable.size(); ++c)
       for (const Part *part : {&variable[c], &fixed[c]})
         if (part->present)
-          {
-            problem_.W.add(1. / scales[c], part->flexibility);
-            problem_.g_load.add(1. / scales[c], part->load_gaps);
-          }
+          problem_.W.add(1. / scales[c], part->flexibility);
+    assemble_load_gaps();
+  }
+
+
+  void
+  ReducedContactModel::assemble_load_gaps()
+  {
+    problem_.g_load.reinit(problem_.g_initial.size());
+    for (unsigned int c = 0; c < variable.size(); ++c)
+      for (const Part *part : {&variable[c], &fixed[c]})
+        if (part->present)
+          for (unsigned int l = 0; l < part->load_gaps.size(); ++l)
+            {
+              const double factor = load_factor(c, l);
+              if (factor != 0)
+                problem_.g_load.add(factor / scales[c], part->load_gaps[l]);
+            }
     problem_.check();
   }
 
@@ -551,8 +608,10 @@ namespace FuzzyContact
         for (const Part *part : {&variable[c], &fixed[c]})
           if (part->present)
             {
-              Vector<double> rhs = part->matrices.load;
-              rhs *= load_factor;
+              Vector<double> rhs(part->matrices.stiffness.m());
+              for (unsigned int l = 0; l < part->matrices.loads.size(); ++l)
+                rhs.add(load_factor * this->load_factor(c, l),
+                        part->matrices.loads[l]);
               part->matrices.gap_operator.Tvmult_add(rhs, p);
               part->factor->solve(rhs);
               rhs /= scales[c];
@@ -574,7 +633,6 @@ namespace FuzzyContact
   ContactSolution
   ReducedContactModel::solution(const ContactState &state,
                                 const double        load_factor,
-                                const ReportNodes  *report,
                                 const std::string  &solver) const
   {
     ContactSolution s;
@@ -585,36 +643,26 @@ namespace FuzzyContact
     s.iterations = state.iterations;
     s.residual   = state.residual;
     s.compute_totals();
-    if (report != nullptr)
-      {
-        const auto displacement = [&](const FaceNode &node, const unsigned d) {
-          const unsigned int                          c = node.component;
-          const std::vector<types::global_dof_index> &observed =
-            variable[c].matrices.observed_dofs;
-          const auto it =
-            std::find(observed.begin(), observed.end(), node.dofs[d]);
-          AssertThrow(it != observed.end(),
-                      ExcMessage("ReducedContactModel: a report DoF is not "
-                                 "among the observed DoFs."));
-          const unsigned int row = it - observed.begin();
-          double             u   = 0;
+    s.observed.resize(variable.size());
+    for (unsigned int c = 0; c < variable.size(); ++c)
+      for (unsigned int row = 0;
+           row < variable[c].matrices.observed_dofs.size();
+           ++row)
+        {
+          double u = 0;
           for (const Part *part : {&variable[c], &fixed[c]})
             if (part->present)
               {
-                u += load_factor * part->observation_load[row];
+                for (unsigned int l = 0; l < part->observation_loads.size();
+                     ++l)
+                  u += load_factor * this->load_factor(c, l) *
+                       part->observation_loads[l][row];
                 for (unsigned int j = 0; j < state.p.size(); ++j)
                   if (state.p[j] != 0)
                     u += part->observation_flexibility(row, j) * state.p[j];
               }
-          return u / scales[c];
-        };
-        for (unsigned int d = 0; d < 2; ++d)
-          {
-            s.slave_displacement[d] = displacement(report->slave, d);
-            for (unsigned int i = 0; i < 2; ++i)
-              s.master_displacements[i][d] = displacement(report->master[i], d);
-          }
-      }
+          s.observed[c].push_back(u / scales[c]);
+        }
     return s;
   }
 } // namespace FuzzyContact

@@ -1,5 +1,7 @@
 #include <fuzzycontact/scene/scene_state.h>
 
+#include <cmath>
+
 namespace FuzzyContact
 {
   SceneState::SceneState(const Scene &scene)
@@ -23,6 +25,26 @@ namespace FuzzyContact
         friction_coefficients.push_back(pair.friction_coefficient);
         gap_offsets.push_back(0.);
       }
+  }
+
+
+  double
+  SceneState::total_load() const
+  {
+    double total = 0;
+    for (const std::vector<double> &forces : load_forces)
+      for (const double f : forces)
+        total += std::abs(f);
+    return total;
+  }
+
+
+  void
+  SceneState::scale_loads(const double factor)
+  {
+    for (std::vector<double> &forces : load_forces)
+      for (double &f : forces)
+        f *= factor;
   }
 
 

@@ -91,16 +91,14 @@ namespace FuzzyContact
   };
 
   /**
-   * The nodes the reports follow: a slave node and the two end vertices of
-   * the master segment it projects onto (the "two master nodes around it";
-   * if the projection falls on a vertex, the segment on the slave face's
-   * side of it).
+   * One master segment of a contact pair: a face of a master cell, its p +
+   * 1 nodes sorted along the tangent, and the coordinates of its ends along
+   * the tangent.
    */
-  struct ReportNodes
+  struct MasterSegment
   {
-    unsigned int            slave_node;
-    FaceNode                slave;
-    std::array<FaceNode, 2> master;
+    std::vector<FaceNode> nodes;
+    double                s_begin, s_end;
   };
 
   class ContactInterface
@@ -150,30 +148,38 @@ namespace FuzzyContact
     const std::vector<types::global_dof_index> &
     contact_dofs(const unsigned int c) const;
 
+    /** Number of contact pairs (those of the scene, in its order). */
+    unsigned int
+    n_pairs() const;
+    /** Name of contact pair @p pair. */
+    const std::string &
+    pair_name(const unsigned int pair) const;
+
     /**
-     * Gaps of the unloaded configuration: normal rows g0 + the gap offset,
-     * tangential rows 0.
+     * Gaps of the unloaded configuration: normal rows g0, tangential rows 0.
      */
     Vector<double>
     initial_gaps() const;
 
     /**
-     * Shifts every initial normal gap by @p offset [m] (a fuzzy initial
-     * gap, say). Refuses an offset that would make any gap negative beyond
-     * the penetration tolerance.
+     * The same with the initial gap of every slave node of pair p shifted by
+     * @p gap_offsets[p] [m] (a fuzzy initial gap, say). Refuses an offset
+     * that would make any gap negative beyond the penetration tolerance,
+     * naming the pair and the node.
      */
-    void
-    set_gap_offset(const double offset);
-    double
-    gap_offset() const;
+    Vector<double>
+    initial_gaps(const std::vector<double> &gap_offsets) const;
 
-    /** Friction coefficient of every node (from its pair). */
+    /** Friction coefficient of every node, from its pair in the scene. */
     std::vector<double>
     friction_coefficients() const;
 
-    /** Sets the friction coefficient of every pair (>= 0). */
-    void
-    set_friction_coefficient(const double mu);
+    /**
+     * Friction coefficient of every node when pair p has @p per_pair[p]
+     * (each >= 0).
+     */
+    std::vector<double>
+    friction_coefficients(const std::vector<double> &per_pair) const;
 
     /** g = g0 + C u for displacements @p u, one vector per component. */
     Vector<double>
@@ -192,18 +198,14 @@ namespace FuzzyContact
     unsigned int
     nearest_node(const Point<2> &point) const;
 
-    /**
-     * The report nodes of slave node @p k (see ReportNodes).
-     */
-    ReportNodes
-    report_nodes(const unsigned int k) const;
+    /** The master segments of pair @p pair, sorted along its tangent. */
+    const std::vector<MasterSegment> &
+    master_segments(const unsigned int pair) const;
 
-    /**
-     * The slave node that the programs report: the one farthest along the
-     * master tangent (P1's bottom-right corner in the default scenes).
-     */
-    unsigned int
-    report_node() const;
+    /** Coordinate along the tangent of the centre of pair @p pair's slave
+     * face. */
+    double
+    slave_face_centre(const unsigned int pair) const;
 
     /** Largest initial penetration allowed for pair @p pair [m]. */
     double
@@ -217,25 +219,18 @@ namespace FuzzyContact
     void
     build_operators(const std::vector<const Component *> &components);
 
-    struct Segment
-    {
-      std::vector<FaceNode> nodes;
-      double                s_begin, s_end; // coordinates along tau
-    };
-
     std::vector<ContactNode>                          nodes_;
     std::vector<types::global_dof_index>              offsets_;
     std::vector<SparsityPattern>                      patterns_;
     std::vector<SparseMatrix<double>>                 operators_;
     std::vector<std::vector<types::global_dof_index>> contact_dofs_;
     std::vector<std::vector<bool>>                    constrained_;
-    // Per pair: master segments (for the report nodes), the centre of the
-    // slave face along tau, the face length, the penetration tolerance.
-    std::vector<std::vector<Segment>> segments_;
-    std::vector<double>               slave_face_centre_;
-    std::vector<double>               penetration_tolerance_;
-    std::vector<std::string>          pair_names_;
-    double                            gap_offset_ = 0;
+    // Per pair: master segments, the centre of the slave face along tau,
+    // the penetration tolerance, the name.
+    std::vector<std::vector<MasterSegment>> segments_;
+    std::vector<double>                     slave_face_centre_;
+    std::vector<double>                     penetration_tolerance_;
+    std::vector<std::string>                pair_names_;
   };
 } // namespace FuzzyContact
 

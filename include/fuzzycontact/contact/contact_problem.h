@@ -210,8 +210,16 @@ namespace FuzzyContact
                  const std::function<double(unsigned int)> &c_n);
 
   /**
+   * DoFs whose displacements a solver reports, per component: the
+   * observations of a study (study/observations.h) ask for them, and every
+   * solver returns the displacements there, even when it computes no
+   * displacement field.
+   */
+  using ObservedDofs = std::vector<std::vector<types::global_dof_index>>;
+
+  /**
    * The result of a contact solver: per slave node the forces, gaps and
-   * statuses; the total forces; the displacements of the report nodes;
+   * statuses; the total forces; the displacements at the observed DoFs;
    * and what it cost.
    */
   struct ContactSolution
@@ -224,11 +232,13 @@ namespace FuzzyContact
     /** sum_k p_n and sum_k p_t [N]. */
     double normal_force     = 0;
     double tangential_force = 0;
-    /** (u_x, u_y) of the report's slave node and of its two master nodes. */
-    std::array<double, 2>                slave_displacement{{0, 0}};
-    std::array<std::array<double, 2>, 2> master_displacements{{{{0, 0}}}};
-    unsigned int                         iterations   = 0;
-    unsigned int                         n_load_steps = 1;
+    /**
+     * Displacements [m] at the observed DoFs: observed[c][i] is that of the
+     * i-th observed DoF of component c (see ObservedDofs).
+     */
+    std::vector<std::vector<double>> observed;
+    unsigned int                     iterations   = 0;
+    unsigned int                     n_load_steps = 1;
     /** Relative complementarity residual of the final state. */
     double residual = 0;
     /** Wall time of the solve [s] (see each solver for what it covers). */

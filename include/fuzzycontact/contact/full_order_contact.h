@@ -7,11 +7,13 @@
 // With Lagrange multipliers p (contact forces) the saddle-point system is
 //
 //     K_c u_c = lambda f_c + C_c^T p   for every component c,
-//     g = g0 + sum_c C_c u_c,          Signorini + Coulomb on (g, p).
+//     g = g0 + sum_c C_c u_c,          Signorini + Coulomb on (g, p),
 //
-// It is solved by block elimination: every K_c is factorised once by
-// UMFPACK (sparse LU, SparseDirectSolver), and the primal-dual active set
-// method (ActiveSetSolver) works on the Schur complement W = sum_c C_c K_c^{-1}
+// where f_c = sum_l F_l f_l is the component's load, each load l a total
+// force F_l times its consistent nodal forces. It is solved by block
+// elimination: every K_c is factorised once by UMFPACK (sparse LU,
+// SparseDirectSolver), and the primal-dual active set method
+// (ActiveSetSolver) works on the Schur complement W = sum_c C_c K_c^{-1}
 // C_c^T, whose columns are computed only when the active set first needs
 // them (one back-substitution per component touched) and kept. The
 // displacements then follow from one more back-substitution per component,
@@ -19,7 +21,7 @@
 // those displacements, not on W.
 //
 // What is reused, and when (all exact):
-//  - the factorisations, columns of W and free solutions K_c^{-1} f_c,
+//  - the factorisations, columns of W and load responses K_c^{-1} f_l,
 //    across active set iterations, load steps and solves, while the
 //    stiffness does not change;
 //  - the same, after set_zone_materials() on a component has scaled all its
@@ -30,9 +32,10 @@
 //    warm starts are switched on (the answer does not depend on the start).
 // Any other change of a component's moduli triggers a new factorisation.
 //
-// The load factor, friction coefficients and initial gaps are read at each
-// solve: the load factor from this object, mu and the gaps (with their
-// offset) from the ContactInterface.
+// The stiffness is read from the components at each solve; the loads, the
+// initial gaps and the friction coefficients are this object's own (the
+// scene's values until they are set), so that a study sets all of them from
+// one SceneState (study/contact_models.h).
 
 #ifndef fuzzycontact_contact_full_order_contact_h
 #define fuzzycontact_contact_full_order_contact_h
@@ -64,11 +67,23 @@ namespace FuzzyContact
       const ContactInterface               &interface,
       const ActiveSetParameters            &parameters = ActiveSetParameters());
 
-    /** Multiplies every component's declared loads (default 1). */
+    /**
+     * The total force of every load [N], load_forces[c][l] for load l of
+     * component c (default: the scene's declared forces).
+     */
+    void
+    set_load_forces(const std::vector<std::vector<double>> &load_forces);
+    /** Multiplies all loads (default 1); the load steps go up to it. */
     void
     set_load_factor(const double load_factor);
-    double
-    load_factor() const;
+    /**
+     * Initial gaps (2 rows per slave node, tangential rows 0) and the
+     * friction coefficient of every slave node (default: the interface's,
+     * i.e. the scene's).
+     */
+    void
+    set_contact_conditions(const Vector<double>      &initial_gaps,
+                           const std::vector<double> &friction_coefficients);
     /** Proportional load steps (default 1). */
     void
     set_n_load_steps(const unsigned int n_load_steps);
@@ -77,27 +92,34 @@ namespace FuzzyContact
     set_warm_start(const bool warm_start);
 
     /**
+     * The DoFs whose displacements solve() returns in
+     * ContactSolution::observed (default: none).
+     */
+    void
+    observe(const ObservedDofs &dofs);
+
+    /**
      * With @p fields = false, solve() does not compute the displacement
      * fields: the forces come from the active set solution on W (whose
      * columns carry the accuracy of a plain back-substitution, about 1e-9
      * relative on fine meshes), the residual is measured on W's gaps, and
-     * the report nodes' displacements are combined from the free solutions
-     * and the columns kept at those DoFs. No back-substitution is needed
-     * once the columns exist, which makes repeated solves (the Extension
+     * the observed displacements are combined from the load responses and
+     * the columns kept at those DoFs. No back-substitution is needed once
+     * the columns exist, which makes repeated solves (the Extension
      * Principle's thousands of samples) cheap. Default: true.
      */
     void
     set_displacement_fields(const bool fields);
 
     /**
-     * Solves the contact problem for the current stiffness, load factor,
-     * friction coefficients and gaps. The displacements of @p report (if
-     * given) and the full displacement fields go into the solution; its
-     * time covers everything the solve had to do (factorisations, columns
-     * of W, active set iterations, final displacements).
+     * Solves the contact problem for the current stiffness, loads, gaps and
+     * friction coefficients. The observed displacements and the full
+     * displacement fields go into the solution; its time covers everything
+     * the solve had to do (factorisations, columns of W, active set
+     * iterations, final displacements).
      */
     ContactSolution
-    solve(const ReportNodes *report = nullptr);
+    solve();
 
     /**
      * The whole contact flexibility W (every column computed); for tests
@@ -121,7 +143,7 @@ namespace FuzzyContact
   private:
     class Flexibility;
 
-    /** Factorises what changed; returns true if anything was refactorised. */
+    /** Factorises what changed. */
     void
     update_factorizations();
     /** Makes W's column j available. */
@@ -132,40 +154,55 @@ namespace FuzzyContact
     /** K_c^{-1} rhs with one step of extended-precision refinement. */
     Vector<double>
     accurate_solve(const unsigned int c, const Vector<double> &rhs);
+    /** The load of component c at load factor 1. */
+    Vector<double>
+    load_vector(const unsigned int c) const;
+    /** K_c^{-1} f_c at load factor 1, from the kept load responses. */
+    Vector<double>
+    load_response(const unsigned int c) const;
+    /** The displacement of DoF @p dof of component @p c for forces @p p. */
+    double
+    observed_displacement(const unsigned int            c,
+                          const unsigned int            position,
+                          const types::global_dof_index dof,
+                          const Vector<double>         &p) const;
+    /** Solution without fields (see set_displacement_fields()). */
+    ContactSolution
+    outputs_only(const ContactState &state);
+    /** Solution with refined displacement fields. */
+    ContactSolution
+    with_fields(const ContactState   &state,
+                const Vector<double> &g_previous,
+                FlexibilityOperator  &W);
 
     std::vector<const Component *> components;
     const ContactInterface        &interface;
     ActiveSetSolver                solver;
-    double                         load_factor_  = 1;
-    unsigned int                   n_load_steps_ = 1;
-    bool                           warm_start_   = false;
+    double                         load_factor_         = 1;
+    unsigned int                   n_load_steps_        = 1;
+    bool                           warm_start_          = false;
+    bool                           displacement_fields_ = true;
+    // Loads per component and load, and the reference forces of the kept
+    // load responses (the declared force, or 1 N for a declared zero).
+    std::vector<std::vector<double>> load_forces_, reference_forces_;
+    Vector<double>                   initial_gaps_;
+    std::vector<double>              friction_;
+    ObservedDofs                     observed_dofs;
 
     // Per component: the factorisation of K_ref, the moduli it was made
-    // with, the current scale s (K = s K_ref), K_ref^{-1} f, and the
-    // columns C_c K_ref^{-1} C_c^T e_j computed so far.
+    // with, the current scale s (K = s K_ref), K_ref^{-1} f_l at the
+    // reference forces, and the columns C_c K_ref^{-1} C_c^T e_j computed so
+    // far.
     struct Factorized
     {
       std::unique_ptr<SparseDirectSolver>          inverse;
       std::vector<double>                          moduli;
       double                                       scale = 1;
-      Vector<double>                               free_solution;
+      std::vector<Vector<double>>                  load_responses;
       std::vector<std::unique_ptr<Vector<double>>> columns;
-      // K_c,ref^{-1} C_c^T e_j at the DoFs of observed_dofs, per column j.
+      // K_c,ref^{-1} C_c^T e_j at the observed DoFs, per column j.
       std::vector<std::vector<double>> observed_columns;
     };
-    // The DoFs of the report nodes, per component (set by solve()).
-    std::vector<std::vector<types::global_dof_index>> observed_dofs;
-    bool displacement_fields_ = true;
-
-    // Makes sure the columns kept at the report's DoFs exist: if the report
-    // changed, the columns are recomputed.
-    void
-    observe(const ReportNodes &report);
-    // The displacement of DoF @p dof of component @p c for forces @p p.
-    double
-                            observed_displacement(const unsigned int            c,
-                                                  const types::global_dof_index dof,
-                                                  const Vector<double>         &p);
     std::vector<Factorized> factorized;
     // Columns of W = sum_c (column of c) / s_c at the current scales.
     std::vector<std::unique_ptr<Vector<double>>> columns;

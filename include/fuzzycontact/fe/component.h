@@ -122,6 +122,19 @@ namespace FuzzyContact
     unit_load_vector(const unsigned int l) const;
 
     /**
+     * The force at which the solvers keep the response to load @p l: its
+     * declared total force, or 1 N if that is zero. A load at total force F
+     * is then (F / reference) times the reference load, which is exactly
+     * the declared load when F is the declared force.
+     */
+    double
+    reference_load_force(const unsigned int l) const;
+
+    /** reference_load_force(l) times unit_load_vector(l). */
+    Vector<double>
+    reference_load_vector(const unsigned int l) const;
+
+    /**
      * The two DoFs (x, y) of the mesh vertex at @p p; throws if no vertex
      * lies within a relative distance 1e-10 of the component's size.
      */

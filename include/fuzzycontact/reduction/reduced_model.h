@@ -76,8 +76,13 @@ namespace FuzzyContact
     FullMatrix<double> stiffness;
     /** C_r = C_c V (rows of the contact interface x k). */
     FullMatrix<double> gap_operator;
-    /** f_r = V^T f_c at load factor 1. */
-    Vector<double> load;
+    /**
+     * f_r,l = V^T f_l for every load l of the component, at its reference
+     * force (Component::reference_load_force()).
+     */
+    std::vector<Vector<double>> loads;
+    /** The reference force [N] of each load. */
+    std::vector<double> reference_forces;
     /** DoFs whose displacements the solvers report, and V's rows there. */
     std::vector<types::global_dof_index> observed_dofs;
     FullMatrix<double>                   observation;
@@ -135,7 +140,11 @@ namespace FuzzyContact
     void
     expand(const Vector<double> &q, Vector<double> &u) const;
 
-    /** The reduced matrices of this component for @p interface's block c. */
+    /**
+     * The reduced matrices of this component for the gap operator block
+     * @p gap_operator (C_c of the contact interface), observing
+     * @p observed_dofs.
+     */
     ReducedComponentMatrices
     matrices(const SparseMatrix<double>                 &gap_operator,
              const std::vector<types::global_dof_index> &observed_dofs) const;
@@ -160,12 +169,20 @@ namespace FuzzyContact
   {
   public:
     /**
-     * @p g_initial, @p mu: initial gaps and friction coefficients (from the
-     * ContactInterface, which may have shifted them).
+     * @p g_initial, @p mu: initial gaps and friction coefficients of the
+     * slave nodes (the ContactInterface's, or those of a SceneState). The
+     * loads are at their reference forces until set_load_forces().
      */
     ReducedContactModel(std::vector<ReducedComponentMatrices> components,
                         const Vector<double>                 &g_initial,
                         const std::vector<double>            &mu);
+
+    /**
+     * The total force of every load [N], load_forces[c][l] for load l of
+     * component c: g_load becomes sum_c sum_l (F_l / F_ref,l) g_load,c,l.
+     */
+    void
+    set_load_forces(const std::vector<std::vector<double>> &load_forces);
 
     const ContactProblem &
     problem() const;
@@ -217,42 +234,47 @@ namespace FuzzyContact
 
     /**
      * The solution of a solver in reduced coordinates: forces, gaps
-     * (g_free + W p), statuses, totals and the displacements of @p report
-     * (whose DoFs must be among the observed ones), recovered as
-     * lambda O K_r^{-1} f_r + (O K_r^{-1} C_r^T) p with matrices formed when
-     * the model is built (no reduced solve).
+     * (g_free + W p), statuses, totals and the displacements at every
+     * observed DoF, recovered as lambda O K_r^{-1} f_r + (O K_r^{-1} C_r^T) p
+     * with matrices formed when the model is built (no reduced solve).
      */
     ContactSolution
     solution(const ContactState &state,
              const double        load_factor,
-             const ReportNodes  *report,
              const std::string  &solver) const;
 
   private:
     // The reduced matrices of (a part of) one component and what is formed
-    // from them: the factorised K_r, W_c = C_r K_r^{-1} C_r^T, g_load,c =
-    // C_r K_r^{-1} f_r, and O K_r^{-1} C_r^T, O K_r^{-1} f_r, the observed
-    // displacements straight from the forces.
+    // from them: the factorised K_r, W_c = C_r K_r^{-1} C_r^T, g_load,c,l =
+    // C_r K_r^{-1} f_r,l, and O K_r^{-1} C_r^T, O K_r^{-1} f_r,l, the
+    // observed displacements straight from the forces.
     struct Part
     {
       ReducedComponentMatrices                  matrices;
       std::unique_ptr<LAPACKFullMatrix<double>> factor;
       FullMatrix<double>                        flexibility;
-      Vector<double>                            load_gaps;
+      std::vector<Vector<double>>               load_gaps;
       FullMatrix<double>                        observation_flexibility;
-      Vector<double>                            observation_load;
+      std::vector<Vector<double>>               observation_loads;
       bool                                      present = false;
     };
     // Checks and factorises a part's matrices, and forms its blocks.
     void
     compute_blocks(Part &part) const;
-    // W = sum_c W_c / s_c, g_load = sum_c g_load,c / s_c.
+    // W = sum_c W_c / s_c, and g_load.
     void
     assemble_problem();
+    // g_load = sum_c sum_l (F_l / F_ref,l) g_load,c,l / s_c.
+    void
+    assemble_load_gaps();
+    // F_l / F_ref,l of load l of component c.
+    double
+    load_factor(const unsigned int c, const unsigned int l) const;
 
-    std::vector<Part>   variable, fixed;
-    std::vector<double> scales;
-    ContactProblem      problem_;
+    std::vector<Part>                variable, fixed;
+    std::vector<double>              scales;
+    std::vector<std::vector<double>> load_forces;
+    ContactProblem                   problem_;
   };
 } // namespace FuzzyContact
 

@@ -37,6 +37,13 @@ namespace FuzzyContact
      */
     std::vector<double> gap_offsets;
 
+    /** sum |F| over all loads [N]. */
+    double
+    total_load() const;
+    /** Multiplies every load force by @p factor. */
+    void
+    scale_loads(const double factor);
+
     bool
     operator==(const SceneState &other) const;
     bool

@@ -1,0 +1,71 @@
+// The report of a fuzzy study (step-4): the study and its model, one table
+// per output with the alpha-cuts of every method and their differences from
+// the Extension Principle, the non-monotone responses found, the cost, and
+// the membership functions as a picture. Text goes to a Report
+// (report.txt), numbers to results.json under the keys step-4 has always
+// written (outputs[].name/unit/alpha/lower/upper/..., time_s, evaluations,
+// speed_up, notes).
+
+#ifndef fuzzycontact_output_fuzzy_report_h
+#define fuzzycontact_output_fuzzy_report_h
+
+#include <fuzzycontact/fuzzy/fuzzy_parameters.h>
+#include <fuzzycontact/fuzzy/interval_analysis.h>
+#include <fuzzycontact/output/output_files.h>
+#include <fuzzycontact/output/report.h>
+#include <fuzzycontact/study/observations.h>
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace FuzzyContact
+{
+  /** What a fuzzy study found, for its report. */
+  struct FuzzyStudyResults
+  {
+    std::string                 scene;
+    unsigned int                n_processes = 1;
+    std::vector<unsigned int>   n_dofs;
+    std::vector<FuzzyParameter> parameters;
+    std::vector<Observation>    outputs;
+    std::vector<double>         alpha;
+    FuzzyOutputBounds           optimisation;
+    /** Empty bounds if the method was not run. */
+    FuzzyOutputBounds vertex, reference;
+    bool              has_vertex    = false;
+    bool              has_reference = false;
+    double            offline_time  = 0;
+  };
+
+  namespace FuzzyStudyReport
+  {
+    /** The study: scene, processes, fuzzy parameters, levels. */
+    std::string
+    study(const std::string                 &scene_name,
+          const std::string                 &scene_file,
+          const unsigned int                 n_processes,
+          const std::vector<FuzzyParameter> &parameters,
+          const unsigned int                 n_alpha);
+
+    /**
+     * The bound tables of every output, the non-monotone responses and the
+     * cost, said in @p report and written into @p json.
+     */
+    void
+    bounds(const FuzzyStudyResults &results,
+           Report                  &report,
+           nlohmann::json          &json);
+
+    /**
+     * Queues the membership functions of every output (membership.png,
+     * drawn by gnuplot from membership.dat/.gp) in @p files; says in
+     * @p report why the picture is missing if gnuplot fails.
+     */
+    void
+    plot(const FuzzyStudyResults &results, OutputFiles &files, Report &report);
+  } // namespace FuzzyStudyReport
+} // namespace FuzzyContact
+
+#endif

@@ -1,0 +1,72 @@
+// The bodies of a study, built once from a scene description: one Component
+// (mesh, DoFs, zone matrices, loads) per scene component and the contact
+// interface of all its contact pairs. Every program, test and benchmark
+// builds its bodies here, so a scene means the same everywhere.
+//
+// The components' zone materials are the one part of a scene's state that
+// lives in the bodies (their stiffness and mass matrices depend on it);
+// set_materials() sets them from a SceneState. Loads, friction coefficients
+// and gaps are applied by the models (contact_model.h).
+
+#ifndef fuzzycontact_study_contact_scene_h
+#define fuzzycontact_study_contact_scene_h
+
+#include <fuzzycontact/contact/contact_interface.h>
+#include <fuzzycontact/fe/component.h>
+#include <fuzzycontact/scene/scene.h>
+#include <fuzzycontact/scene/scene_state.h>
+
+#include <deal.II/base/timer.h>
+
+#include <memory>
+#include <vector>
+
+namespace FuzzyContact
+{
+  class ContactScene
+  {
+  public:
+    /**
+     * Meshes every component of @p scene (refined globally
+     * @p mesh_refinements times), assembles it, and builds the contact
+     * interface (initial penetration beyond @p penetration_tolerance times
+     * the master face length is refused). Stages are timed in @p timer if
+     * given ("mesh and DoFs", "assembly", "contact interface").
+     */
+    ContactScene(const Scene       &scene,
+                 const unsigned int mesh_refinements,
+                 const double       penetration_tolerance = 1e-8,
+                 TimerOutput       *timer                 = nullptr);
+
+    const Scene &
+    scene() const;
+    unsigned int
+    n_components() const;
+    const Component &
+    component(const unsigned int c) const;
+    /** The components in scene order (for the solvers). */
+    const std::vector<const Component *> &
+    components() const;
+    const ContactInterface &
+    interface() const;
+    /** DoFs of each component. */
+    std::vector<unsigned int>
+    n_dofs() const;
+
+    /**
+     * Sets every component's zone moduli and densities to those of
+     * @p state (a state of scene()); components whose materials do not
+     * change are left alone.
+     */
+    void
+    set_materials(const SceneState &state);
+
+  private:
+    Scene                                   scene_;
+    std::vector<std::unique_ptr<Component>> owned;
+    std::vector<const Component *>          components_;
+    std::unique_ptr<ContactInterface>       interface_;
+  };
+} // namespace FuzzyContact
+
+#endif

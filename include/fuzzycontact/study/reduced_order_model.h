@@ -1,0 +1,187 @@
+// The reduced model of a study: every component reduced to its modes with
+// or without static correction modes (reduction/reduced_model.h), the
+// reduced contact problem solved by a ContactSolver, and set from a
+// SceneState like the full-order model (contact_model.h).
+//
+// Everything that does not depend on the state is computed once: the
+// reduced matrices of every component and the reduced contact flexibility,
+// and for components whose zone materials vary, a parameter-independent
+// reanalysis. Per state, component by component:
+//  - zone moduli that are all the nominal ones times one factor s (a
+//    modulus of a whole component, or no change) scale its stiffness
+//    exactly: the modes stay, and so does its part of the contact
+//    flexibility, divided by s. Densities then do not
+//    matter: the modes keep their span, and the static reduced model does
+//    not change;
+//  - zone moduli and densities that change the mode shapes (quantities of
+//    single zones) go through the parameter-independent HPTP (modes T Y(p),
+//    the order chosen offline from a tolerance at the corners of the
+//    quantities' ranges). The static correction then enters one of two
+//    ways: "residual flexibility" (the default) keeps the flexibility of
+//    the static correction modes at its nominal value and adds it to that
+//    of the re-analysed modes (MacNeal), O(rows^2 n_modes) per state;
+//    "galerkin" projects the stiffness onto the basis [T Y(p), Psi] (zone
+//    projections precomputed offline), more accurate but a dense
+//    factorisation of the whole reduced stiffness per state;
+//  - loads scale their load terms, friction coefficients and gaps enter the
+//    small contact problem directly.
+// A state that changes a component in a way the model was not built for
+// (zones of a component without reanalysis) is refused.
+
+#ifndef fuzzycontact_study_reduced_order_model_h
+#define fuzzycontact_study_reduced_order_model_h
+
+#include <fuzzycontact/contact/contact_solver.h>
+#include <fuzzycontact/fuzzy/fuzzy_number.h>
+#include <fuzzycontact/modal/modal_solver.h>
+#include <fuzzycontact/reanalysis/modal_reanalysis.h>
+#include <fuzzycontact/reanalysis/parameter_independent_reanalysis.h>
+#include <fuzzycontact/reduction/reduced_model.h>
+#include <fuzzycontact/scene/scene_quantity.h>
+#include <fuzzycontact/study/contact_model.h>
+#include <fuzzycontact/study/contact_scene.h>
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace FuzzyContact
+{
+  /** A scene quantity a study varies, and the range of its values. */
+  struct VaryingQuantity
+  {
+    SceneQuantity quantity;
+    Interval      range;
+  };
+
+  struct ReducedModelSettings
+  {
+    /** Static correction modes in the reduced model (else modes only). */
+    bool static_correction = true;
+    /** How the static correction enters for zone parameters (see above). */
+    enum class ZoneCorrection
+    {
+      residual_flexibility,
+      galerkin
+    };
+    ZoneCorrection zone_correction = ZoneCorrection::residual_flexibility;
+    /**
+     * Static correction modes whose Gram eigenvalue is below this fraction
+     * of the largest are linearly dependent and dropped.
+     */
+    double             rank_tolerance = 1e-12;
+    ReanalysisSettings reanalysis;
+  };
+
+  /**
+   * The lowest modes of every component of @p bodies at their current
+   * materials ("modes (ARPACK)" in @p timer).
+   */
+  std::vector<ModalBasis>
+  component_modes(const ContactScene    &bodies,
+                  const ModalParameters &parameters,
+                  TimerOutput           *timer = nullptr);
+
+  /**
+   * Truncates each component's modes to the fewest whose modal static
+   * response to a unit normal force at slave node @p node (its part of the
+   * node's normal contact flexibility) has a relative energy error of at
+   * most @p tolerance (modes_for_static_error()); components the node does
+   * not touch keep theirs.
+   */
+  void
+  truncate_to_static_error(std::vector<ModalBasis> &modes,
+                           const ContactScene      &bodies,
+                           const unsigned int       node,
+                           const double             tolerance);
+
+  class ReducedOrderModel : public ContactModel
+  {
+  public:
+    /**
+     * Reduces every component of @p bodies with its @p modes (copied) and,
+     * if asked, static correction modes for its contact DoFs and loads, and
+     * builds the reanalysis of the components whose zone materials the
+     * @p varying quantities change. @p observed: the DoFs whose
+     * displacements solve() reports. Stages are timed in @p timer if given.
+     * The components' current materials are the nominal ones (those of
+     * @p bodies' scene).
+     */
+    ReducedOrderModel(const ContactScene                 &bodies,
+                      const std::vector<ModalBasis>      &modes,
+                      const ObservedDofs                 &observed,
+                      const std::vector<VaryingQuantity> &varying,
+                      const ReducedModelSettings         &settings,
+                      TimerOutput                        *timer = nullptr);
+    ~ReducedOrderModel() override;
+
+    /** "reduced" and the solver's name, e.g. "reduced (fl2c)". */
+    std::string
+    name() const override;
+    void
+    set_state(const SceneState &state) override;
+    /** With the solver of set_contact_solver() (default: FL2C). */
+    ContactSolution
+    solve() override;
+    /**
+     * With @p solver; @p what names the solve in messages and in the
+     * solution (default: the solver's name).
+     */
+    ContactSolution
+    solve(const ContactSolver &solver, const std::string &what = "");
+
+    /** The solver of solve(), and the name of its solves (see above). */
+    void
+    set_contact_solver(std::unique_ptr<ContactSolver> solver,
+                       const std::string             &what = "");
+    /** Proportional load steps up to the state's loads (default 1). */
+    void
+    set_n_load_steps(const unsigned int n_load_steps);
+
+    /** The reduced contact problem at the current state. */
+    const ContactProblem &
+    problem() const;
+
+    unsigned int
+    n_modes(const unsigned int c) const;
+    unsigned int
+    n_corrections(const unsigned int c) const;
+    /** HPTP order of each component (0: exact scaling, no reanalysis). */
+    std::vector<unsigned int>
+    reanalysis_orders() const;
+    /** A line per component: DoFs, modes, corrections, treatment. */
+    std::string
+    describe() const;
+
+    /**
+     * The displacement fields u_c = V_c q_c of @p solution (a solution of
+     * this model at its current state); not for re-analysed components.
+     */
+    std::vector<Vector<double>>
+    displacement_fields(const ContactSolution &solution) const;
+
+  private:
+    struct ComponentModel;
+
+    void
+    build_reanalysis(ComponentModel                     &m,
+                     const unsigned int                  c,
+                     const std::vector<VaryingQuantity> &varying,
+                     TimerOutput                        *timer);
+    ReducedComponentMatrices
+    reanalysed_matrices(const ComponentModel &m, const SceneState &state) const;
+
+    const ContactScene                          &bodies;
+    ReducedModelSettings                         settings;
+    std::vector<std::unique_ptr<ComponentModel>> models;
+    std::unique_ptr<ReducedContactModel>         reduced;
+    std::unique_ptr<ContactSolver>               solver;
+    std::string                                  label;
+    unsigned int                                 n_load_steps = 1;
+  };
+} // namespace FuzzyContact
+
+#endif

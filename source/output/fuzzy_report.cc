@@ -1,0 +1,264 @@
+#include <fuzzycontact/output/fuzzy_report.h>
+#include <fuzzycontact/output/membership_plot.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace FuzzyContact
+{
+  namespace
+  {
+    std::string
+    number(const double x)
+    {
+      std::ostringstream s;
+      s << std::scientific << std::setprecision(5) << x;
+      return s.str();
+    }
+
+    // Relative differences, with a floor for an output that is zero at
+    // every level (F_t without friction).
+    double
+    difference(const std::vector<Interval> &b, const std::vector<Interval> &r)
+    {
+      double scale = 0;
+      for (const Interval &i : r)
+        scale = std::max({scale, std::abs(i.lower), std::abs(i.upper)});
+      return max_relative_difference(b,
+                                     r,
+                                     scale > 0
+                                       ? 1e-9 * scale
+                                       : std::numeric_limits<double>::min());
+    }
+
+    // The table of output k, and its entry of results.json.
+    nlohmann::json
+    output_table(const FuzzyStudyResults &r,
+                 const unsigned int       k,
+                 std::ostringstream      &out)
+    {
+      const Observation &o = r.outputs[k];
+      out << "\n"
+          << o.description() << ", " << o.name << " [" << o.unit() << "]\n"
+          << "  alpha   optimisation: lower      upper     ";
+      if (r.has_vertex)
+        out << "  vertex: lower      upper      ";
+      if (r.has_reference)
+        out << "  Extension Principle: lower  upper        rel. diff";
+      out << "\n";
+      nlohmann::json entry;
+      entry["name"]  = o.name;
+      entry["unit"]  = o.unit();
+      entry["alpha"] = r.alpha;
+      std::vector<double> lo, hi, rlo, rhi, vlo, vhi;
+      for (unsigned int l = 0; l < r.alpha.size(); ++l)
+        {
+          const Interval b = r.optimisation.bounds[k][l];
+          lo.push_back(b.lower);
+          hi.push_back(b.upper);
+          out << "  " << std::fixed << std::setprecision(2) << r.alpha[l]
+              << "   " << std::setw(12) << number(b.lower) << " "
+              << std::setw(12) << number(b.upper);
+          if (r.has_vertex)
+            {
+              const Interval v = r.vertex.bounds[k][l];
+              vlo.push_back(v.lower);
+              vhi.push_back(v.upper);
+              out << "   " << std::setw(12) << number(v.lower) << " "
+                  << std::setw(12) << number(v.upper);
+            }
+          if (r.has_reference)
+            {
+              const Interval e = r.reference.bounds[k][l];
+              rlo.push_back(e.lower);
+              rhi.push_back(e.upper);
+              out << "   " << std::setw(12) << number(e.lower) << " "
+                  << std::setw(12) << number(e.upper) << "   "
+                  << std::setprecision(1) << std::scientific
+                  << difference({b}, {e});
+            }
+          out << "\n";
+        }
+      entry["lower"] = lo;
+      entry["upper"] = hi;
+      if (r.has_vertex)
+        {
+          entry["vertex_lower"] = vlo;
+          entry["vertex_upper"] = vhi;
+        }
+      if (r.has_reference)
+        {
+          entry["reference_lower"] = rlo;
+          entry["reference_upper"] = rhi;
+          entry["max_rel_error"] =
+            difference(r.optimisation.bounds[k], r.reference.bounds[k]);
+          out << "  largest relative difference from the Extension "
+                 "Principle: optimisation "
+              << std::scientific << std::setprecision(2)
+              << double(entry["max_rel_error"]);
+          if (r.has_vertex)
+            {
+              entry["vertex_max_rel_error"] =
+                difference(r.vertex.bounds[k], r.reference.bounds[k]);
+              out << ", vertex method "
+                  << double(entry["vertex_max_rel_error"]);
+            }
+          out << "\n";
+        }
+      return entry;
+    }
+
+    // Evaluations and wall times, the fast study against the reference
+    // run beside it.
+    void
+    cost(const FuzzyStudyResults &r, Report &report, nlohmann::json &json)
+    {
+      const double       study = r.offline_time + r.optimisation.wall_time;
+      std::ostringstream out;
+      out << "\ncost (wall time, " << r.n_processes << " process(es))\n"
+          << "  offline (model built once)            " << std::fixed
+          << std::setprecision(2) << std::setw(8) << r.offline_time << " s\n"
+          << "  optimisation, reduced model           " << std::setw(8)
+          << r.optimisation.wall_time << " s  " << r.optimisation.n_evaluations
+          << " evaluations\n";
+      json["time_s"]["offline"]           = r.offline_time;
+      json["time_s"]["optimisation"]      = r.optimisation.wall_time;
+      json["time_s"]["fuzzy_study"]       = study;
+      json["evaluations"]["optimisation"] = r.optimisation.n_evaluations;
+      if (r.has_vertex)
+        {
+          out << "  vertex method, reduced model          " << std::setw(8)
+              << r.vertex.wall_time << " s  " << r.vertex.n_evaluations
+              << " evaluations\n";
+          json["time_s"]["vertex"]      = r.vertex.wall_time;
+          json["evaluations"]["vertex"] = r.vertex.n_evaluations;
+        }
+      if (r.has_reference)
+        {
+          out << "  Extension Principle, full order       " << std::setw(8)
+              << r.reference.wall_time << " s  " << r.reference.n_evaluations
+              << " evaluations\n"
+              << "  the fuzzy study (offline + optimisation) takes "
+              << std::setw(6) << study << " s, " << std::setprecision(1)
+              << r.reference.wall_time / study
+              << "x less than the Extension Principle\n";
+          json["time_s"]["extension_principle"] = r.reference.wall_time;
+          json["evaluations"]["extension_principle"] =
+            r.reference.n_evaluations;
+          json["speed_up"] = r.reference.wall_time / study;
+        }
+      report.say(out.str());
+    }
+  } // namespace
+
+
+  namespace FuzzyStudyReport
+  {
+    std::string
+    study(const std::string                 &scene_name,
+          const std::string                 &scene_file,
+          const unsigned int                 n_processes,
+          const std::vector<FuzzyParameter> &parameters,
+          const unsigned int                 n_alpha)
+    {
+      std::ostringstream out;
+      out << "step-4: fuzzy contact study of the scene '" << scene_name << "' ("
+          << scene_file << "), " << n_processes << " MPI process(es)\n"
+          << "fuzzy parameters:\n";
+      for (const FuzzyParameter &p : parameters)
+        out << "  " << std::left << std::setw(16) << p.quantity.name
+            << std::right << p.number.to_string() << "\n";
+      out << n_alpha << " alpha levels\n";
+      return out.str();
+    }
+
+
+    void
+    bounds(const FuzzyStudyResults &r, Report &report, nlohmann::json &json)
+    {
+      json["scene"]            = r.scene;
+      json["mpi_processes"]    = r.n_processes;
+      json["n_dofs"]           = r.n_dofs;
+      json["fuzzy_parameters"] = nlohmann::json::array();
+      for (const FuzzyParameter &p : r.parameters)
+        json["fuzzy_parameters"].push_back(
+          {{"name", p.quantity.name},
+           {"membership", p.number.to_string()},
+           {"points", p.number.points()}});
+      json["outputs"] = nlohmann::json::array();
+      for (unsigned int k = 0; k < r.outputs.size(); ++k)
+        {
+          std::ostringstream out;
+          json["outputs"].push_back(output_table(r, k, out));
+          report.say(out.str());
+        }
+
+      // Non-monotone responses found by the optimisation.
+      std::ostringstream notes;
+      notes << "\nmonotonicity: ";
+      if (r.optimisation.notes.empty())
+        notes << "no non-monotone response detected (no interior optimum, "
+                 "no vertex better than a local optimum, no sensitivity "
+                 "changing sign)\n";
+      else
+        {
+          notes << r.optimisation.notes.size() << " finding(s):\n";
+          for (const std::string &n : r.optimisation.notes)
+            notes << "  " << n << "\n";
+        }
+      json["notes"] = r.optimisation.notes;
+      report.say(notes.str());
+      cost(r, report, json);
+    }
+
+
+    void
+    plot(const FuzzyStudyResults &r, OutputFiles &files, Report &report)
+    {
+      std::vector<MembershipPanel> panels;
+      for (unsigned int k = 0; k < r.outputs.size(); ++k)
+        {
+          const Observation &o = r.outputs[k];
+          // Millimetres, kilonewtons and megapascals read best here.
+          const std::string unit  = o.unit();
+          const double      scale = unit == "m"    ? 1e-3
+                                    : unit == "N"  ? 1e3
+                                    : unit == "Pa" ? 1e6
+                                                   : 1;
+          const std::string shown = unit == "m"    ? "mm"
+                                    : unit == "N"  ? "kN"
+                                    : unit == "Pa" ? "MPa"
+                                                   : unit;
+          MembershipPanel   panel{o.description(),
+                                o.name + " [" + shown + "]",
+                                scale,
+                                {}};
+          if (r.has_reference)
+            panel.curves.push_back({"Extension Principle (full order)",
+                                    r.alpha,
+                                    r.reference.bounds[k],
+                                    "points pt 7 ps 0.9 lc rgb '#444444'"});
+          panel.curves.push_back({"optimisation (reduced model)",
+                                  r.alpha,
+                                  r.optimisation.bounds[k],
+                                  "lines lw 2 lc rgb '#1f77b4'"});
+          if (r.has_vertex)
+            panel.curves.push_back({"vertex method (reduced model)",
+                                    r.alpha,
+                                    r.vertex.bounds[k],
+                                    "lines lw 2 dt 2 lc rgb '#d62728'"});
+          panels.push_back(panel);
+        }
+      std::string message;
+      if (!add_membership_plot(files,
+                               "membership",
+                               "Fuzzy response of the scene '" + r.scene + "'",
+                               panels,
+                               message))
+        report.say("warning: " + message + "\n");
+    }
+  } // namespace FuzzyStudyReport
+} // namespace FuzzyContact

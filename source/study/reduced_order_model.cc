@@ -1,0 +1,606 @@
+#include <fuzzycontact/base/sparse_direct_solver.h>
+#include <fuzzycontact/contact/fl2c.h>
+#include <fuzzycontact/study/reduced_order_model.h>
+
+#include <deal.II/base/exceptions.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace FuzzyContact
+{
+  namespace
+  {
+    std::unique_ptr<TimerOutput::Scope>
+    time(TimerOutput *timer, const std::string &section)
+    {
+      return timer != nullptr
+               ? std::make_unique<TimerOutput::Scope>(*timer, section)
+               : std::unique_ptr<TimerOutput::Scope>();
+    }
+
+    // Copies the block [rows, columns) of @p A.
+    FullMatrix<double>
+    block(const FullMatrix<double> &A,
+          const unsigned int        row_begin,
+          const unsigned int        n_rows,
+          const unsigned int        column_begin,
+          const unsigned int        n_columns)
+    {
+      FullMatrix<double> B(n_rows, n_columns);
+      for (unsigned int i = 0; i < n_rows; ++i)
+        for (unsigned int j = 0; j < n_columns; ++j)
+          B(i, j) = A(row_begin + i, column_begin + j);
+      return B;
+    }
+
+    // The reduced matrices of the basis vectors [begin, begin + n) of @p r.
+    ReducedComponentMatrices
+    columns(const ReducedComponentMatrices &r,
+            const unsigned int              begin,
+            const unsigned int              n)
+    {
+      ReducedComponentMatrices part;
+      part.stiffness = block(r.stiffness, begin, n, begin, n);
+      part.gap_operator =
+        block(r.gap_operator, 0, r.gap_operator.m(), begin, n);
+      for (const Vector<double> &load : r.loads)
+        {
+          Vector<double> f(n);
+          for (unsigned int i = 0; i < n; ++i)
+            f[i] = load[begin + i];
+          part.loads.push_back(std::move(f));
+        }
+      part.reference_forces = r.reference_forces;
+      part.observed_dofs    = r.observed_dofs;
+      part.observation = block(r.observation, 0, r.observation.m(), begin, n);
+      return part;
+    }
+
+    // s if @p values = s * @p nominal for one factor s > 0, else 0.
+    double
+    common_factor(const std::vector<double> &values,
+                  const std::vector<double> &nominal)
+    {
+      const double s = values[0] / nominal[0];
+      for (unsigned int z = 0; z < values.size(); ++z)
+        if (std::abs(values[z] / nominal[z] - s) > 1e-14 * s)
+          return 0;
+      return s;
+    }
+  } // namespace
+
+
+  // How a component's materials enter the reduced model.
+  struct ReducedOrderModel::ComponentModel
+  {
+    // Exact scaling, or the parameter-independent HPTP.
+    bool                       hptp = false;
+    std::vector<SceneQuantity> quantities; // its varying material quantities
+    std::vector<double>        nominal_moduli, nominal_densities;
+
+    ModalBasis                        modes;
+    std::unique_ptr<ReducedComponent> reduced;
+    ReducedComponentMatrices          nominal_matrices;
+    // The static correction enters as a fixed residual flexibility.
+    bool split = false;
+
+    // HPTP: the reanalysis and the projections that turn Y(p) into the
+    // component's reduced matrices.
+    std::unique_ptr<ParameterIndependentReanalysis> reanalysis;
+    std::vector<FullMatrix<double>> T_K_psi;    // T^T K_z Psi per zone
+    std::vector<FullMatrix<double>> psi_K_psi;  // Psi^T K_z Psi per zone
+    FullMatrix<double>              C_T, C_psi; // C T, C Psi
+    FullMatrix<double>              O_T, O_psi; // rows at observed DoFs
+    std::vector<Vector<double>>     T_f, psi_f; // T^T f_l, Psi^T f_l
+  };
+
+
+  std::vector<ModalBasis>
+  component_modes(const ContactScene    &bodies,
+                  const ModalParameters &parameters,
+                  TimerOutput           *timer)
+  {
+    const ModalSolver       solver(parameters);
+    std::vector<ModalBasis> modes;
+    for (const Component *component : bodies.components())
+      {
+        auto scope = time(timer, "modes (ARPACK)");
+        modes.push_back(solver.solve(component->stiffness_matrix(),
+                                     component->mass_matrix(),
+                                     "Component " + component->name()));
+      }
+    return modes;
+  }
+
+
+  void
+  truncate_to_static_error(std::vector<ModalBasis> &modes,
+                           const ContactScene      &bodies,
+                           const unsigned int       node,
+                           const double             tolerance)
+  {
+    const ContactInterface &interface = bodies.interface();
+    for (unsigned int c = 0; c < bodies.n_components(); ++c)
+      {
+        // The component's part of the node's normal flexibility.
+        const Component &component = bodies.component(c);
+        const auto      &C         = interface.gap_operator(c);
+        Vector<double>   f(component.n_dofs());
+        for (auto it = C.begin(normal_row(node)); it != C.end(normal_row(node));
+             ++it)
+          f[it->column()] = it->value();
+        if (f.linfty_norm() == 0)
+          continue;
+        SparseDirectSolver inverse;
+        inverse.factorize(component.stiffness_matrix());
+        Vector<double> u = f;
+        inverse.solve(u);
+        const unsigned int n =
+          modes_for_static_error(modes[c],
+                                 f,
+                                 u,
+                                 tolerance,
+                                 "Component " + component.name());
+        modes[c].eigenvalues.resize(n);
+        modes[c].modes.resize(n);
+        modes[c].residuals.resize(n);
+      }
+  }
+
+
+  ReducedOrderModel::ReducedOrderModel(
+    const ContactScene                 &bodies,
+    const std::vector<ModalBasis>      &modes,
+    const ObservedDofs                 &observed,
+    const std::vector<VaryingQuantity> &varying,
+    const ReducedModelSettings         &settings,
+    TimerOutput                        *timer)
+      : bodies(bodies)
+      , settings(settings)
+      , solver(std::make_unique<FL2CSolver>())
+  {
+    const unsigned int n_c = bodies.n_components();
+    AssertThrow(modes.size() == n_c && observed.size() == n_c,
+                ExcMessage("ReducedOrderModel: one modal basis and one list "
+                           "of observed DoFs per component are expected."));
+    const ContactInterface &interface = bodies.interface();
+
+    // Which components need a reanalysis: those with a varying material
+    // quantity of a single zone.
+    for (unsigned int c = 0; c < n_c; ++c)
+      {
+        auto m               = std::make_unique<ComponentModel>();
+        m->nominal_moduli    = bodies.component(c).zone_moduli();
+        m->nominal_densities = bodies.component(c).zone_densities();
+        for (const VaryingQuantity &v : varying)
+          if (v.quantity.is_material() && v.quantity.component == c)
+            {
+              m->quantities.push_back(v.quantity);
+              m->hptp = m->hptp || v.quantity.zone >= 0;
+            }
+        m->modes = modes[c];
+        models.push_back(std::move(m));
+      }
+
+    std::vector<ReducedComponentMatrices> nominal;
+    for (unsigned int c = 0; c < n_c; ++c)
+      {
+        ComponentModel  &m         = *models[c];
+        const Component &component = bodies.component(c);
+        {
+          auto scope = time(timer, "static correction modes");
+          m.reduced =
+            std::make_unique<ReducedComponent>(component,
+                                               m.modes,
+                                               interface.contact_dofs(c),
+                                               settings.static_correction,
+                                               settings.rank_tolerance);
+        }
+        {
+          auto scope = time(timer, "reduced matrices");
+          m.nominal_matrices =
+            m.reduced->matrices(interface.gap_operator(c), observed[c]);
+        }
+        // Residual flexibility: the static correction modes' part of a
+        // re-analysed component stays (set below as the fixed part); only
+        // its modal part will change. At the nominal point the split is
+        // exact: the correction modes are K-orthogonal to the modes,
+        // K_r = diag(Lambda, I).
+        m.split =
+          m.hptp &&
+          settings.zone_correction ==
+            ReducedModelSettings::ZoneCorrection::residual_flexibility &&
+          m.reduced->n_corrections() > 0;
+        nominal.push_back(
+          m.split ? columns(m.nominal_matrices, 0, m.reduced->n_modes())
+                  : m.nominal_matrices);
+        if (m.hptp)
+          build_reanalysis(m, c, varying, timer);
+      }
+
+    auto scope = time(timer, "reduced contact flexibility");
+    reduced =
+      std::make_unique<ReducedContactModel>(std::move(nominal),
+                                            interface.initial_gaps(),
+                                            interface.friction_coefficients());
+    for (unsigned int c = 0; c < n_c; ++c)
+      if (models[c]->split)
+        reduced->set_fixed_part(c,
+                                columns(models[c]->nominal_matrices,
+                                        models[c]->reduced->n_modes(),
+                                        models[c]->reduced->n_corrections()));
+  }
+
+
+  ReducedOrderModel::~ReducedOrderModel() = default;
+
+
+  // Zone parameters: the parameter-independent HPTP, its order chosen
+  // from the tolerance at the corners of the quantities' ranges, and what
+  // turns Y(p) into reduced matrices: C T, the rows of T at the observed
+  // DoFs, T^T f_l, and for the Galerkin correction also T^T K_z Psi,
+  // Psi^T K_z Psi, C Psi, the rows of Psi and Psi^T f_l.
+  void
+  ReducedOrderModel::build_reanalysis(
+    ComponentModel                     &m,
+    const unsigned int                  c,
+    const std::vector<VaryingQuantity> &varying,
+    TimerOutput                        *timer)
+  {
+    const Component         &component = bodies.component(c);
+    std::vector<std::string> names;
+    std::vector<Interval>    ranges;
+    for (const SceneQuantity &q : m.quantities)
+      {
+        names.push_back(q.name);
+        for (const VaryingQuantity &v : varying)
+          if (v.quantity.name == q.name)
+            ranges.push_back(v.range);
+      }
+    const ReanalysisSettings &rs = settings.reanalysis;
+    m.reanalysis = std::make_unique<ParameterIndependentReanalysis>();
+    m.reanalysis->offline(component,
+                          m.modes,
+                          names,
+                          rs.max_order,
+                          rs.truncation_tolerance,
+                          rs.cluster_gap,
+                          timer);
+    {
+      auto scope = time(timer, "reanalysis order selection");
+      std::vector<std::vector<double>> corners;
+      const unsigned int               n = names.size();
+      for (unsigned long corner = 0; corner < (1ul << n); ++corner)
+        {
+          std::vector<double> values(n);
+          for (unsigned int k = 0; k < n; ++k)
+            values[k] = (corner >> k) & 1 ? ranges[k].upper : ranges[k].lower;
+          corners.push_back(m.reanalysis->model().relative_changes(values));
+        }
+      m.reanalysis->select_order(corners,
+                                 rs.order_tolerance,
+                                 rs.residual_check);
+    }
+
+    auto                scope    = time(timer, "reanalysis projections");
+    const ReducedBasis &T        = m.reanalysis->basis();
+    const unsigned int  n_m      = m.reduced->n_modes();
+    const bool          galerkin = settings.zone_correction ==
+                          ReducedModelSettings::ZoneCorrection::galerkin;
+    const unsigned int n_s = galerkin ? m.reduced->n_corrections() : 0;
+    const unsigned int n_T = T.size();
+    Vector<double>     Kt(component.n_dofs());
+    for (unsigned int z = 0; z < component.n_zones(); ++z)
+      {
+        FullMatrix<double> TKpsi(n_T, n_s);
+        for (unsigned int i = 0; i < n_T && n_s > 0; ++i)
+          {
+            component.zone_stiffness_matrix(z).vmult(Kt, T[i]);
+            const Vector<double> q = m.reduced->project(Kt);
+            for (unsigned int j = 0; j < n_s; ++j)
+              TKpsi(i, j) = q[n_m + j];
+          }
+        m.T_K_psi.push_back(std::move(TKpsi));
+        m.psi_K_psi.push_back(
+          n_s > 0 ? block(m.reduced->zone_stiffness(z), n_m, n_s, n_m, n_s)
+                  : FullMatrix<double>());
+      }
+    const SparseMatrix<double> &C = bodies.interface().gap_operator(c);
+    m.C_T                         = T.apply(C);
+    const FullMatrix<double> C_V  = m.reduced->project_rows(C);
+    m.C_psi                       = block(C_V, 0, C_V.m(), n_m, n_s);
+    const auto &observed          = m.nominal_matrices.observed_dofs;
+    m.O_T.reinit(observed.size(), n_T);
+    for (unsigned int r = 0; r < observed.size(); ++r)
+      for (unsigned int i = 0; i < n_T; ++i)
+        m.O_T(r, i) = T[i][observed[r]];
+    const FullMatrix<double> O_V = m.reduced->rows(observed);
+    m.O_psi                      = block(O_V, 0, O_V.m(), n_m, n_s);
+    for (unsigned int l = 0; l < component.description().loads.size(); ++l)
+      {
+        const Vector<double> f = component.reference_load_vector(l);
+        m.T_f.push_back(T.project(f));
+        const Vector<double> V_f = m.reduced->project(f);
+        Vector<double>       psi_f(n_s);
+        for (unsigned int j = 0; j < n_s; ++j)
+          psi_f[j] = V_f[n_m + j];
+        m.psi_f.push_back(std::move(psi_f));
+      }
+  }
+
+
+  // The reduced matrices of a component on the reanalysed basis
+  // V(p) = [T Y(p), Psi]:
+  //   K_r = [Y^T (T^T K T) Y, Y^T (T^T K Psi); sym., Psi^T K Psi],
+  //   C_r = [C T Y, C Psi],  f_r,l = [Y^T T^T f_l, Psi^T f_l],
+  //   O = [O T Y, O Psi],
+  // with K = sum_z E_z(p) K_z, from the projections made offline.
+  ReducedComponentMatrices
+  ReducedOrderModel::reanalysed_matrices(const ComponentModel &m,
+                                         const SceneState     &state) const
+  {
+    const unsigned int  c = m.quantities.front().component;
+    std::vector<double> values;
+    for (const SceneQuantity &q : m.quantities)
+      values.push_back(q.value(state, bodies.scene()));
+    const std::vector<double> t =
+      m.reanalysis->model().relative_changes(values);
+    const auto materials = m.reanalysis->model().zone_materials(t);
+    for (unsigned int z = 0; z < materials.first.size(); ++z)
+      AssertThrow(
+        std::abs(materials.first[z] - state.zone_moduli[c][z]) <=
+            1e-12 * state.zone_moduli[c][z] &&
+          std::abs(materials.second[z] - state.zone_densities[c][z]) <=
+            1e-12 * state.zone_densities[c][z],
+        ExcMessage("The reduced model of component " +
+                   bodies.component(c).name() +
+                   " was built to vary its zone materials through " +
+                   "its fuzzy parameters only; the state to solve "
+                   "changes zone " +
+                   bodies.scene().components[c].zones[z].name + " otherwise."));
+
+    const ReanalysedModes modes = m.reanalysis->online(t);
+    const unsigned int    n_T   = modes.basis_size;
+    const unsigned int    n_m   = modes.Y.n();
+    // (0 unless the static correction enters by Galerkin projection)
+    const unsigned int        n_s = m.C_psi.n();
+    const unsigned int        k   = n_m + n_s;
+    const std::vector<double> E   = materials.first;
+
+    const FullMatrix<double> Y = block(modes.Y, 0, n_T, 0, n_m);
+    ReducedComponentMatrices r;
+
+    // K_r
+    r.stiffness.reinit(k, k);
+    {
+      const FullMatrix<double> KT =
+        m.reanalysis->reduced_stiffness(t, modes.order);
+      FullMatrix<double> KY(n_T, n_m), YKY(n_m, n_m);
+      KT.mmult(KY, Y);
+      Y.Tmmult(YKY, KY);
+      for (unsigned int i = 0; i < n_m; ++i)
+        for (unsigned int j = 0; j < n_m; ++j)
+          r.stiffness(i, j) = 0.5 * (YKY(i, j) + YKY(j, i));
+    }
+    if (n_s > 0)
+      {
+        FullMatrix<double> TKpsi(n_T, n_s), D(n_s, n_s);
+        for (unsigned int z = 0; z < E.size(); ++z)
+          {
+            TKpsi.add(E[z], block(m.T_K_psi[z], 0, n_T, 0, n_s));
+            D.add(E[z], m.psi_K_psi[z]);
+          }
+        FullMatrix<double> YTKpsi(n_m, n_s);
+        Y.Tmmult(YTKpsi, TKpsi);
+        for (unsigned int i = 0; i < n_m; ++i)
+          for (unsigned int j = 0; j < n_s; ++j)
+            r.stiffness(i, n_m + j) = r.stiffness(n_m + j, i) = YTKpsi(i, j);
+        for (unsigned int i = 0; i < n_s; ++i)
+          for (unsigned int j = 0; j < n_s; ++j)
+            r.stiffness(n_m + i, n_m + j) = 0.5 * (D(i, j) + D(j, i));
+      }
+
+    // C_r, f_r and the observation rows: [A(:, 0..n_T) Y, B], the rows of
+    // an operator on the new basis
+    const auto on_basis = [&](const FullMatrix<double> &A,
+                              const FullMatrix<double> &B) {
+      const unsigned int rows = A.m();
+      FullMatrix<double> AY(rows, n_m), result(rows, k);
+      if (rows == 0)
+        return result;
+      block(A, 0, rows, 0, n_T).mmult(AY, Y);
+      for (unsigned int i = 0; i < rows; ++i)
+        {
+          for (unsigned int j = 0; j < n_m; ++j)
+            result(i, j) = AY(i, j);
+          for (unsigned int j = 0; j < n_s; ++j)
+            result(i, n_m + j) = B(i, j);
+        }
+      return result;
+    };
+    r.gap_operator = on_basis(m.C_T, m.C_psi);
+    for (unsigned int l = 0; l < m.T_f.size(); ++l)
+      {
+        Vector<double> f(k);
+        for (unsigned int j = 0; j < n_m; ++j)
+          for (unsigned int i = 0; i < n_T; ++i)
+            f[j] += Y(i, j) * m.T_f[l][i];
+        for (unsigned int j = 0; j < n_s; ++j)
+          f[n_m + j] = m.psi_f[l][j];
+        r.loads.push_back(std::move(f));
+      }
+    r.reference_forces = m.nominal_matrices.reference_forces;
+    r.observed_dofs    = m.nominal_matrices.observed_dofs;
+    r.observation      = on_basis(m.O_T, m.O_psi);
+    return r;
+  }
+
+
+  std::string
+  ReducedOrderModel::name() const
+  {
+    return "reduced (" + solver->name() + ")";
+  }
+
+
+  void
+  ReducedOrderModel::set_state(const SceneState &state)
+  {
+    const ContactInterface &interface = bodies.interface();
+    AssertThrow(state.zone_moduli.size() == models.size(),
+                ExcMessage("ReducedOrderModel: the state is not one of this "
+                           "scene."));
+    std::vector<double> scales(models.size(), 1.);
+    for (unsigned int c = 0; c < models.size(); ++c)
+      {
+        const ComponentModel &m = *models[c];
+        if (m.hptp)
+          {
+            reduced->replace_component(c, reanalysed_matrices(m, state));
+            continue;
+          }
+        // Moduli that are the nominal ones times one factor scale the
+        // stiffness exactly; densities then do not change the static model
+        // as long as they keep their proportions (they leave the modes'
+        // span alone).
+        scales[c] = common_factor(state.zone_moduli[c], m.nominal_moduli);
+        AssertThrow(scales[c] > 0 && common_factor(state.zone_densities[c],
+                                                   m.nominal_densities) > 0,
+                    ExcMessage("The reduced model of component " +
+                               bodies.component(c).name() +
+                               " has no reanalysis: it represents changes of "
+                               "the moduli and densities of all its zones by "
+                               "one factor only, but the state to solve "
+                               "changes its zones differently."));
+      }
+    reduced->set_stiffness_scales(scales);
+    reduced->set_load_forces(state.load_forces);
+    ContactProblem &problem = reduced->problem();
+    problem.g_initial       = interface.initial_gaps(state.gap_offsets);
+    problem.mu = interface.friction_coefficients(state.friction_coefficients);
+  }
+
+
+  ContactSolution
+  ReducedOrderModel::solve()
+  {
+    return solve(*solver, label);
+  }
+
+
+  ContactSolution
+  ReducedOrderModel::solve(const ContactSolver &contact_solver,
+                           const std::string   &what)
+  {
+    const std::string  name = what.empty() ? contact_solver.name() : what;
+    Timer              clock;
+    const ContactState state =
+      contact_solver.solve(reduced->problem(), 1., n_load_steps, name);
+    ContactSolution s = reduced->solution(state, 1., name);
+    s.n_load_steps    = n_load_steps;
+    s.time            = clock.wall_time();
+    return s;
+  }
+
+
+  void
+  ReducedOrderModel::set_contact_solver(std::unique_ptr<ContactSolver> s,
+                                        const std::string             &what)
+  {
+    AssertThrow(s != nullptr, ExcMessage("ReducedOrderModel: no solver."));
+    solver = std::move(s);
+    label  = what;
+  }
+
+
+  void
+  ReducedOrderModel::set_n_load_steps(const unsigned int n)
+  {
+    AssertThrow(n >= 1, ExcMessage("load steps must be at least 1."));
+    n_load_steps = n;
+  }
+
+
+  const ContactProblem &
+  ReducedOrderModel::problem() const
+  {
+    return reduced->problem();
+  }
+
+
+  unsigned int
+  ReducedOrderModel::n_modes(const unsigned int c) const
+  {
+    AssertIndexRange(c, models.size());
+    return models[c]->reduced->n_modes();
+  }
+
+
+  unsigned int
+  ReducedOrderModel::n_corrections(const unsigned int c) const
+  {
+    AssertIndexRange(c, models.size());
+    return models[c]->reduced->n_corrections();
+  }
+
+
+  std::vector<unsigned int>
+  ReducedOrderModel::reanalysis_orders() const
+  {
+    std::vector<unsigned int> n;
+    for (const auto &m : models)
+      n.push_back(m->reanalysis ? m->reanalysis->order() : 0);
+    return n;
+  }
+
+
+  std::string
+  ReducedOrderModel::describe() const
+  {
+    std::ostringstream out;
+    for (unsigned int c = 0; c < models.size(); ++c)
+      {
+        const ComponentModel &m = *models[c];
+        out << "  " << bodies.component(c).name() << ": "
+            << bodies.component(c).n_dofs() << " DoFs, " << m.reduced->n_modes()
+            << " modes (" << std::setprecision(4) << m.modes.frequencies()[0]
+            << " to " << m.modes.frequencies().back() << " Hz) + "
+            << m.reduced->n_corrections() << " static correction modes; ";
+        if (m.quantities.empty())
+          out << "no fuzzy material";
+        else
+          {
+            out << "fuzzy";
+            for (const SceneQuantity &q : m.quantities)
+              out << " " << q.name;
+            if (m.hptp)
+              out << ": parameter-independent HPTP, order "
+                  << m.reanalysis->order() << " ("
+                  << m.reanalysis->basis_size(m.reanalysis->order())
+                  << " basis vectors)";
+            else
+              out << ": exact scaling of the stiffness (modes unchanged)";
+          }
+        out << "\n";
+      }
+    return out.str();
+  }
+
+
+  std::vector<Vector<double>>
+  ReducedOrderModel::displacement_fields(const ContactSolution &s) const
+  {
+    const std::vector<Vector<double>> q = reduced->coordinates(s.p, 1.);
+    std::vector<Vector<double>>       u(models.size());
+    for (unsigned int c = 0; c < models.size(); ++c)
+      {
+        AssertThrow(!models[c]->hptp,
+                    ExcMessage("ReducedOrderModel: the displacement field of "
+                               "a re-analysed component is not available."));
+        models[c]->reduced->expand(q[c], u[c]);
+      }
+    return u;
+  }
+} // namespace FuzzyContact

@@ -1,0 +1,359 @@
+// Tests of the study layer: the binding of named scene quantities to a
+// state, the models set from it, and the outputs (observations) chosen by
+// name. The references are hand-computed values, independent solvers set up
+// without the study layer, and the definitions of the outputs; the hard case
+// is a scene with two contact pairs of different friction.
+
+#include <fuzzycontact/base/input.h>
+#include <fuzzycontact/contact/active_set_solver.h>
+#include <fuzzycontact/contact/fl2c.h>
+#include <fuzzycontact/contact/full_order_contact.h>
+#include <fuzzycontact/fuzzy/fuzzy_parameters.h>
+#include <fuzzycontact/scene/scene.h>
+#include <fuzzycontact/scene/scene_quantity.h>
+#include <fuzzycontact/scene/scene_state.h>
+#include <fuzzycontact/study/contact_scene.h>
+#include <fuzzycontact/study/full_order_model.h>
+#include <fuzzycontact/study/fuzzy_contact_model.h>
+#include <fuzzycontact/study/observations.h>
+#include <fuzzycontact/study/reduced_order_model.h>
+
+#include <gtest/gtest.h>
+
+#include "test_utilities.h"
+#include <cmath>
+
+using namespace FuzzyContact;
+using namespace FuzzyContact::Testing;
+
+namespace
+{
+  Scene
+  scene(const std::string &name)
+  {
+    return Scene::read(source_dir + "/prm/" + name + ".prm");
+  }
+
+  // The per-pair outputs of the three-beams scene.
+  const std::vector<std::string> pair_outputs =
+    {"lower.Fn", "lower.Ft", "upper.Fn", "upper.Ft", "Fn", "Ft", "slave.uy"};
+} // namespace
+
+
+// ----------------------------------------------------------------------------
+// Scene quantities and their binding to a state
+// ----------------------------------------------------------------------------
+
+// <component>.E over zones of different moduli: the area-weighted mean,
+// and setting it scales every zone; a zone quantity sets its zone alone;
+// two fuzzy parameters that set the same modulus are refused.
+TEST(SceneQuantity, WholeComponentOverZonesThatDiffer)
+{
+  Scene s = scene("cantilever-zones");
+  // root [0, 0.05] and tip [0.05, 0.2] of the same height: areas 1 : 3,
+  // mean (200 + 3 x 100) / 4 = 125 GPa.
+  s.components[0].zones[0].x_range        = {{0, 0.05}};
+  s.components[0].zones[1].x_range        = {{0.05, 0.2}};
+  s.components[0].zones[0].youngs_modulus = 200e9;
+  s.components[0].zones[1].youngs_modulus = 100e9;
+  const SceneQuantity E                   = SceneQuantity::parse("beam.E", s);
+  EXPECT_NEAR(E.value(s), 125e9, 1e-3);
+  SceneState state(s);
+  E.apply(state, s, 150e9);
+  EXPECT_NEAR(state.zone_moduli[0][0], 240e9, 1e-3);
+  EXPECT_NEAR(state.zone_moduli[0][1], 120e9, 1e-3);
+  EXPECT_NEAR(E.value(state, s), 150e9, 1e-3);
+  const SceneQuantity root = SceneQuantity::parse("beam.root.E", s);
+  SceneState          other(s);
+  root.apply(other, s, 50e9);
+  EXPECT_EQ(other.zone_moduli[0], (std::vector<double>{50e9, 100e9}));
+  EXPECT_TRUE(E.overlaps(root, s));
+  EXPECT_FALSE(root.overlaps(SceneQuantity::parse("beam.tip.E", s), s));
+  EXPECT_FALSE(root.overlaps(SceneQuantity::parse("beam.root.rho", s), s));
+
+  FuzzyParameterSet set;
+  const std::string message = error_of([&] {
+    Input::parse_in_passes(
+      "set fuzzy parameters = beam.E, beam.root.E\n"
+      "subsection Fuzzy parameter beam.E\nset values = 1e11, 2e11, 3e11\nend\n"
+      "subsection Fuzzy parameter beam.root.E\nset values = 1e11, 2e11, "
+      "3e11\nend\n",
+      "test.prm",
+      [&](dealii::ParameterHandler &prm) {
+        set.declare_parameters(prm);
+      },
+      [&](dealii::ParameterHandler &prm) {
+        return set.learn_names(prm);
+      },
+      [&](dealii::ParameterHandler &prm) {
+        set.parse_parameters(prm, s);
+      });
+  });
+  EXPECT_NE(message.find("fuzzy parameters: <beam.E> and <beam.root.E> set "
+                         "the same value of the scene"),
+            std::string::npos)
+    << message;
+}
+
+// The gap of a pair is its nominal gap shifted: the state holds the shift.
+TEST(SceneQuantity, GapAndFrictionPerPair)
+{
+  const Scene         s   = scene("three-beams");
+  const SceneQuantity gap = SceneQuantity::parse("upper.gap", s);
+  const SceneQuantity mu  = SceneQuantity::parse("lower.mu", s);
+  EXPECT_NEAR(gap.value(s), 1e-8, 1e-18);
+  SceneState state(s);
+  gap.apply(state, s, 3e-8);
+  mu.apply(state, s, 0.2);
+  EXPECT_NEAR(state.gap_offsets[1], 2e-8, 1e-18);
+  EXPECT_EQ(state.gap_offsets[0], 0.);
+  EXPECT_EQ(state.friction_coefficients, (std::vector<double>{0.2, 0.5}));
+  EXPECT_NE(error_of([&] {
+              SceneQuantity::parse("middle.mu", s);
+            })
+              .find("the scene has no contact pair <middle> (its contact "
+                    "pairs: lower, upper)"),
+            std::string::npos);
+}
+
+
+// ----------------------------------------------------------------------------
+// Observations
+// ----------------------------------------------------------------------------
+
+TEST(Observations, NamesAreCheckedBeforeMeshing)
+{
+  const Scene s = scene("three-beams");
+  EXPECT_EQ(Observations::split("P1.node(0.2, 0).ux, Fn ,upper.Ft"),
+            (std::vector<std::string>{"P1.node(0.2, 0).ux", "Fn", "upper.Ft"}));
+  const auto refusal = [&](const std::string &list) {
+    return error_of([&] {
+      Observations::check(Observations::split(list), s);
+    });
+  };
+  EXPECT_NE(refusal("Fn, Fn").find("outputs: <Fn> appears twice"),
+            std::string::npos);
+  EXPECT_NE(refusal("Fn,").find("contains an empty name"), std::string::npos);
+  EXPECT_NE(refusal("P1.node(0.2, 0.ux").find("unbalanced parentheses"),
+            std::string::npos);
+  EXPECT_NE(refusal("P4.node(0.2, 0).ux")
+              .find("outputs: <P4.node(0.2, 0).ux>: the scene has no "
+                    "component <P4> (its components: P1, P2, P3)"),
+            std::string::npos);
+  EXPECT_NE(refusal("P1.node(0.5, 0).ux")
+              .find("the point (0.5, 0) lies outside component P1"),
+            std::string::npos);
+  EXPECT_NE(refusal("P1.node(x, 0).uy").find("<x> is not a number"),
+            std::string::npos);
+  EXPECT_NE(refusal("middle.Fn")
+              .find("the scene has no contact pair "
+                    "<middle> (its contact pairs: lower, "
+                    "upper)"),
+            std::string::npos);
+  EXPECT_NE(refusal("upper.pressure").find("not an output; use"),
+            std::string::npos);
+  EXPECT_NE(refusal("P1.node(0.2, 0).uz").find("not an output; use"),
+            std::string::npos);
+  EXPECT_EQ(refusal("P1.node(0.2, 0.008).uy, lower.max_pressure, "
+                    "upper.contact_length, slave.ux, master2.uy"),
+            "");
+}
+
+// The nodes: the nearest node of the component, the report node and the
+// master segment under it; the values are those of the displacement fields
+// at their DoFs.
+TEST(Observations, NodesAndAliasesReadTheDisplacementFields)
+{
+  ContactScene       bodies(scene("overlap"), 0);
+  const Observations outputs({"P1.node(0.2, 0.008).uy",
+                              "P2.node(0.1013, -0.0001).ux",
+                              "slave.ux",
+                              "master1.uy"},
+                             bodies);
+  // P1's top-right corner; P2's nearest node to (0.1013, -0.0001): on its
+  // top face, the mid-side node at x = 0.1 + 0.2 / 150.
+  EXPECT_NEAR(outputs[0].position[0], 0.2, 1e-14);
+  EXPECT_NEAR(outputs[0].position[1], 0.00800001, 1e-14);
+  EXPECT_NEAR(outputs[1].position[0], 0.1 + 0.2 / 150, 1e-14);
+  EXPECT_NEAR(outputs[1].position[1], 0., 1e-14);
+  EXPECT_NEAR(outputs[2].position[0], 0.2, 1e-14);
+  EXPECT_NEAR(outputs[2].position[1], 1e-8, 1e-20);
+  EXPECT_EQ(outputs[0].unit(), "m");
+
+  FullOrderModel full(bodies, outputs.dofs());
+  full.set_state(SceneState(bodies.scene()));
+  const ContactSolution     s = full.solve();
+  const std::vector<double> v = outputs.values(s);
+  ASSERT_EQ(s.displacements.size(), 2u);
+  for (unsigned int i = 0; i < outputs.size(); ++i)
+    EXPECT_EQ(v[i], s.displacements[outputs[i].component][outputs[i].dof]);
+  // The tip deflects down, the master node under it too.
+  EXPECT_LT(v[0], -1e-3);
+  EXPECT_LT(v[3], -1e-3);
+}
+
+// Pair outputs against values known by hand: on `overlap` without friction
+// only P1's tip corner closes (a vertex of a Q2 face: tributary length h/6,
+// h = 0.2/75), so the contact length is h/6 and the largest pressure F_n /
+// (h/6 t); the pairs' forces add up to the totals on `three-beams`.
+TEST(Observations, PairOutputsAgreeWithHandValues)
+{
+  {
+    ContactScene       bodies(scene("overlap"), 0);
+    const Observations outputs({"interface.Fn",
+                                "interface.max_pressure",
+                                "interface.contact_length"},
+                               bodies);
+    SceneState         state(bodies.scene());
+    state.friction_coefficients = {0.};
+    FullOrderModel full(bodies, outputs.dofs());
+    full.set_state(state);
+    const ContactSolution s = full.solve();
+    ASSERT_EQ(s.n_nodes() - s.count(ContactStatus::open), 1u);
+    const std::vector<double> v = outputs.values(s);
+    const double              h = 0.2 / 75;
+    EXPECT_NEAR(v[2], h / 6, 1e-15);
+    EXPECT_NEAR(v[1], v[0] / (h / 6 * 1.), 1e-9 * v[1]);
+    EXPECT_EQ(v[0], s.normal_force);
+  }
+  {
+    ContactScene       bodies(scene("three-beams"), 0);
+    const Observations outputs(pair_outputs, bodies);
+    FullOrderModel     full(bodies, outputs.dofs());
+    full.set_state(SceneState(bodies.scene()));
+    const std::vector<double> v = outputs.values(full.solve());
+    EXPECT_NEAR(v[0] + v[2], v[4], 1e-12 * v[4]);
+    EXPECT_NEAR(v[1] + v[3], v[5], 1e-12 * v[4]);
+    EXPECT_GT(v[0], 0.);
+    EXPECT_GT(v[2], 0.);
+  }
+}
+
+
+// ----------------------------------------------------------------------------
+// Two contact pairs of different friction
+// ----------------------------------------------------------------------------
+
+// three-beams: the lower pair is frictionless, the upper one has mu = 0.5.
+// The full-order model, an independent full-order solve set up without the
+// study layer, the exact reduced solver (1e-8) and FL2C (its tolerance,
+// 1e-9 here: 1e-6) agree pair by pair; the lower pair carries no friction
+// force and the upper one slips at the cone.
+TEST(TwoPairs, EverySolverKeepsEachPairsFriction)
+{
+  ContactScene       bodies(scene("three-beams"), 0);
+  const Observations outputs(pair_outputs, bodies);
+  const SceneState   state(bodies.scene());
+
+  FullOrderModel full(bodies, outputs.dofs());
+  full.set_state(state);
+  const std::vector<double> f = outputs.values(full.solve());
+
+  // Independent: the interface's per-node coefficients, straight from the
+  // scene.
+  FullOrderContact direct(bodies.components(), bodies.interface());
+  direct.observe(outputs.dofs());
+  const ContactSolution d = direct.solve();
+
+  ReducedModelSettings settings;
+  ReducedOrderModel    reduced(bodies,
+                            component_modes(bodies, ModalParameters()),
+                            outputs.dofs(),
+                            std::vector<VaryingQuantity>(),
+                            settings);
+  reduced.set_state(state);
+  const std::vector<double> r =
+    outputs.values(reduced.solve(ActiveSetSolver()));
+  FL2CParameters fl2c;
+  fl2c.tolerance              = 1e-9;
+  const std::vector<double> g = outputs.values(reduced.solve(FL2CSolver(fl2c)));
+
+  const std::vector<double> v = outputs.values(d);
+  for (unsigned int i = 0; i < pair_outputs.size(); ++i)
+    {
+      const double scale = i == 6 ? std::abs(f[6]) : f[4];
+      EXPECT_NEAR(v[i], f[i], 1e-12 * scale) << pair_outputs[i];
+      EXPECT_NEAR(r[i], f[i], 1e-8 * scale) << pair_outputs[i];
+      EXPECT_NEAR(g[i], f[i], 1e-6 * scale) << pair_outputs[i];
+    }
+  EXPECT_EQ(f[1], 0.);
+  EXPECT_EQ(g[1], 0.);
+  EXPECT_GT(std::abs(f[3]), 0.1 * f[2]);
+  EXPECT_NEAR(std::abs(f[3]), 0.5 * f[2], 1e-9 * f[2]);
+}
+
+// The fuzzy study on three-beams with a fuzzy modulus of the middle beam:
+// its exact reference keeps each pair's friction (it gave every node the
+// first pair's mu = 0 before, and F_t = 0 where the reduced path and an
+// independent solve give about 0.5 F_n of the upper pair).
+TEST(TwoPairs, FuzzyStudyReferenceKeepsEachPairsFriction)
+{
+  const Scene       s = scene("three-beams");
+  FuzzyParameterSet set;
+  Input::parse_in_passes(
+    "set fuzzy parameters = P1.E\nsubsection Fuzzy parameter P1.E\n"
+    "set values = 0.9, 1, 1.1\nset relative = true\nend\n",
+    "test.prm",
+    [&](dealii::ParameterHandler &prm) {
+      set.declare_parameters(prm);
+    },
+    [&](dealii::ParameterHandler &prm) {
+      return set.learn_names(prm);
+    },
+    [&](dealii::ParameterHandler &prm) {
+      set.parse_parameters(prm, s);
+    });
+  FuzzyContactModelSettings settings;
+  settings.mesh_refinements = 0;
+  settings.fl2c.tolerance   = 1e-10;
+  FuzzyContactModel model(s, set, pair_outputs, settings);
+
+  // Independent: the bodies with P1's modulus set by hand, solved exactly.
+  ContactScene       bodies(s, 0);
+  const Observations outputs(pair_outputs, bodies);
+  for (const double E : {0.9 * 210e9, 210e9, 1.1 * 210e9})
+    {
+      SceneState state(s);
+      state.zone_moduli[0] = {E};
+      bodies.set_materials(state);
+      FullOrderContact direct(bodies.components(), bodies.interface());
+      direct.observe(outputs.dofs());
+      const std::vector<double> d = outputs.values(direct.solve());
+      const std::vector<double> f = model.full_order({E});
+      const std::vector<double> r = model.reduced({E});
+      for (unsigned int i = 0; i < pair_outputs.size(); ++i)
+        {
+          const double scale = i == 6 ? std::abs(d[6]) : d[4];
+          EXPECT_NEAR(f[i], d[i], 1e-9 * scale) << pair_outputs[i];
+          EXPECT_NEAR(r[i], d[i], 1e-7 * scale) << pair_outputs[i];
+        }
+      EXPECT_GT(std::abs(f[3]), 0.1 * f[2]);
+    }
+}
+
+// A reduced model built without the reanalysis of a component cannot
+// represent a change of one of its zones, and says so.
+TEST(ReducedOrderModel, RefusesAStateItWasNotBuiltFor)
+{
+  Scene s                       = scene("overlap");
+  s.components[0].implicit_zone = false;
+  s.components[0].zones         = {
+            MaterialZone{"root", {{0, 0.08}}, {{-1, 1}}, 210e9, 0.3, 7900},
+            MaterialZone{"rest", {{0.08, 0.2}}, {{-1, 1}}, 210e9, 0.3, 7900}};
+  ContactScene       bodies(s, 0);
+  const Observations outputs({"Fn"}, bodies);
+  ReducedOrderModel  reduced(bodies,
+                            component_modes(bodies, ModalParameters()),
+                            outputs.dofs(),
+                            std::vector<VaryingQuantity>(),
+                            ReducedModelSettings());
+  SceneState         state(s);
+  // Both zones by one factor: exact scaling, accepted.
+  state.zone_moduli[0] = {1.1 * 210e9, 1.1 * 210e9};
+  reduced.set_state(state);
+  state.zone_moduli[0] = {1.1 * 210e9, 210e9};
+  EXPECT_NE(error_of([&] {
+              reduced.set_state(state);
+            }).find("The reduced model of component P1 has no reanalysis"),
+            std::string::npos);
+}
