@@ -3,9 +3,11 @@
 // against interval bounds known in closed form.
 
 #include <fuzzycontact/base/input.h>
+#include <fuzzycontact/fuzzy/extension_principle.h>
 #include <fuzzycontact/fuzzy/fuzzy_number.h>
 #include <fuzzycontact/fuzzy/fuzzy_parameters.h>
-#include <fuzzycontact/fuzzy/interval_analysis.h>
+#include <fuzzycontact/fuzzy/optimisation_method.h>
+#include <fuzzycontact/fuzzy/vertex_method.h>
 #include <fuzzycontact/scene/scene.h>
 #include <fuzzycontact/scene/scene_quantity.h>
 
@@ -227,6 +229,9 @@ TEST(FuzzyParameterSet, BadInputIsRefusedWithAMessage)
 
 namespace
 {
+  // The interval methods run on one process here.
+  const MPI_Comm self = MPI_COMM_SELF;
+
   const std::vector<FuzzyNumber> three_parameters = {
     FuzzyNumber::triangular(0.95, 1.0, 1.05),
     FuzzyNumber::triangular(1.9, 2.0, 2.1),
@@ -260,14 +265,17 @@ namespace
 
 TEST(IntervalMethods, AllThreeAreExactForAMonotoneResponse)
 {
-  const auto alpha = alpha_levels(11);
-  const auto v     = vertex_method(three_parameters, alpha, monotone, 2);
-  const auto e = extension_principle(three_parameters, alpha, monotone, 2, 4);
-  const auto o = optimisation_method(three_parameters,
-                                     alpha,
-                                     monotone,
-                                     {"S1", "S2"},
-                                     OptimisationSettings());
+  const auto                     alpha = alpha_levels(11);
+  const std::vector<std::string> names = {"S1", "S2"};
+  const auto                     v =
+    VertexMethod().bounds(three_parameters, alpha, monotone, names, self);
+  const auto e = ExtensionPrinciple(4).bounds(three_parameters,
+                                              alpha,
+                                              monotone,
+                                              names,
+                                              self);
+  const auto o =
+    OptimisationMethod().bounds(three_parameters, alpha, monotone, names, self);
   for (unsigned int k = 0; k < 2; ++k)
     {
       const auto exact = monotone_exact(k, alpha);
@@ -307,7 +315,8 @@ TEST(IntervalMethods, NonMonotoneResponseIsDetectedAndHandled)
       exact.push_back({lo0 + 0.1 * box[1].lower, hi0 + 0.1 * box[1].upper});
     }
 
-  const auto v = vertex_method(parameters, alpha, response, 1);
+  const auto v =
+    VertexMethod().bounds(parameters, alpha, response, {"S"}, self);
   EXPECT_GT(max_relative_difference(v.bounds[0], exact), 1e-3);
 
   // The Extension Principle samples the box, so its interval lies inside
@@ -316,7 +325,8 @@ TEST(IntervalMethods, NonMonotoneResponseIsDetectedAndHandled)
   double previous = 1;
   for (const unsigned int r : {5u, 21u, 81u})
     {
-      const auto e = extension_principle(parameters, alpha, response, 1, r);
+      const auto e =
+        ExtensionPrinciple(r).bounds(parameters, alpha, response, {"S"}, self);
       for (unsigned int l = 0; l < alpha.size(); ++l)
         {
           EXPECT_GE(e.bounds[0][l].lower, exact[l].lower - 1e-15);
@@ -330,11 +340,8 @@ TEST(IntervalMethods, NonMonotoneResponseIsDetectedAndHandled)
     }
   EXPECT_LT(previous, 1e-4);
 
-  const auto o = optimisation_method(parameters,
-                                     alpha,
-                                     response,
-                                     {"S"},
-                                     OptimisationSettings());
+  const auto o =
+    OptimisationMethod().bounds(parameters, alpha, response, {"S"}, self);
   EXPECT_LT(max_relative_difference(o.bounds[0], exact), 1e-8);
   ASSERT_FALSE(o.notes.empty());
   EXPECT_NE(o.notes.front().find("non-monotone response"), std::string::npos)
@@ -360,12 +367,16 @@ TEST(IntervalMethods, LocalOptimumTrapIsCaughtByTheVertexCheck)
   const std::vector<double> alpha = {0, 1};
   OptimisationSettings      with, without;
   without.fallback = false;
-  const auto o = optimisation_method(parameters, alpha, response, {"S"}, with);
+  const auto o =
+    OptimisationMethod(with).bounds(parameters, alpha, response, {"S"}, self);
   EXPECT_NEAR(o.bounds[0][0].lower, -1., 1e-12);
   EXPECT_NEAR(o.bounds[0][0].upper, 1., 1e-12);
   ASSERT_FALSE(o.notes.empty());
-  const auto stuck =
-    optimisation_method(parameters, alpha, response, {"S"}, without);
+  const auto stuck = OptimisationMethod(without).bounds(parameters,
+                                                        alpha,
+                                                        response,
+                                                        {"S"},
+                                                        self);
   EXPECT_FALSE(stuck.notes.empty());
   EXPECT_NE(stuck.notes.front().find("no fallback"), std::string::npos);
 }

@@ -29,9 +29,11 @@
 
 #include <fuzzycontact/base/input.h>
 #include <fuzzycontact/base/program.h>
+#include <fuzzycontact/fuzzy/extension_principle.h>
 #include <fuzzycontact/fuzzy/fuzzy_number.h>
 #include <fuzzycontact/fuzzy/fuzzy_parameters.h>
-#include <fuzzycontact/fuzzy/interval_analysis.h>
+#include <fuzzycontact/fuzzy/optimisation_method.h>
+#include <fuzzycontact/fuzzy/vertex_method.h>
 #include <fuzzycontact/output/membership_plot.h>
 #include <fuzzycontact/output/output_files.h>
 #include <fuzzycontact/scene/scene.h>
@@ -275,17 +277,13 @@ namespace Step4
 
     {
       TimerOutput::Scope scope(timer, "optimisation (reduced model)");
-      optimisation = optimisation_method(numbers,
-                                         alpha,
-                                         reduced,
-                                         names,
-                                         parameters.optimisation,
-                                         comm);
+      optimisation = OptimisationMethod(parameters.optimisation)
+                       .bounds(numbers, alpha, reduced, names, comm);
     }
     if (parameters.vertex_method)
       {
         TimerOutput::Scope scope(timer, "vertex method (reduced model)");
-        vertex = vertex_method(numbers, alpha, reduced, names.size(), comm);
+        vertex = VertexMethod().bounds(numbers, alpha, reduced, names, comm);
       }
     if (parameters.extension_principle)
       {
@@ -303,12 +301,8 @@ namespace Step4
                : "independent analyses") +
             ")\n");
         TimerOutput::Scope scope(timer, "extension principle (full order)");
-        reference = extension_principle(numbers,
-                                        alpha,
-                                        exact,
-                                        names.size(),
-                                        parameters.points_per_dimension,
-                                        comm);
+        reference = ExtensionPrinciple(parameters.points_per_dimension)
+                      .bounds(numbers, alpha, exact, names, comm);
       }
   }
 
