@@ -232,6 +232,18 @@ namespace
   // The interval methods run on one process here.
   const MPI_Comm self = MPI_COMM_SELF;
 
+  // The closed-form responses below are exact to round-off: a response
+  // tolerance near round-off, not the default (1e-7, for the reduced
+  // contact model), so that the checks for non-monotone responses see
+  // every difference above round-off.
+  OptimisationSettings
+  closed_form_settings()
+  {
+    OptimisationSettings settings;
+    settings.response_tolerance = 1e-12;
+    return settings;
+  }
+
   const std::vector<FuzzyNumber> three_parameters = {
     FuzzyNumber::triangular(0.95, 1.0, 1.05),
     FuzzyNumber::triangular(1.9, 2.0, 2.1),
@@ -274,8 +286,8 @@ TEST(IntervalMethods, AllThreeAreExactForAMonotoneResponse)
                                               monotone,
                                               names,
                                               self);
-  const auto o =
-    OptimisationMethod().bounds(three_parameters, alpha, monotone, names, self);
+  const auto o = OptimisationMethod(closed_form_settings())
+                   .bounds(three_parameters, alpha, monotone, names, self);
   for (unsigned int k = 0; k < 2; ++k)
     {
       const auto exact = monotone_exact(k, alpha);
@@ -340,8 +352,8 @@ TEST(IntervalMethods, NonMonotoneResponseIsDetectedAndHandled)
     }
   EXPECT_LT(previous, 1e-4);
 
-  const auto o =
-    OptimisationMethod().bounds(parameters, alpha, response, {"S"}, self);
+  const auto o = OptimisationMethod(closed_form_settings())
+                   .bounds(parameters, alpha, response, {"S"}, self);
   EXPECT_LT(max_relative_difference(o.bounds[0], exact), 1e-8);
   ASSERT_FALSE(o.notes.empty());
   EXPECT_NE(o.notes.front().find("non-monotone response"), std::string::npos)
@@ -365,7 +377,7 @@ TEST(IntervalMethods, LocalOptimumTrapIsCaughtByTheVertexCheck)
     return std::vector<double>{std::cos(3 * M_PI * (p[0] - 1) / 0.1)};
   };
   const std::vector<double> alpha = {0, 1};
-  OptimisationSettings      with, without;
+  OptimisationSettings      with = closed_form_settings(), without = with;
   without.fallback = false;
   const auto o =
     OptimisationMethod(with).bounds(parameters, alpha, response, {"S"}, self);
@@ -393,6 +405,36 @@ TEST(IntervalMethods, CacheCountsDistinctEvaluations)
   cache({1.0});
   EXPECT_EQ(calls, 2u);
   EXPECT_EQ(cache.n_evaluations(), 2u);
+}
+
+// One default per setting, stated once: the parameter file's defaults are
+// those of the struct.
+TEST(IntervalMethods, OptimisationDefaultsOfTheParameterFileAreTheStructs)
+{
+  dealii::ParameterHandler prm;
+  OptimisationSettings::declare_parameters(prm);
+  prm.parse_input_from_string("");
+  OptimisationSettings parsed; // every value different from the default
+  parsed.algorithm              = "quasi-newton";
+  parsed.gradient_tolerance     = 0.5;
+  parsed.step_tolerance         = 0.5;
+  parsed.max_iterations         = 7;
+  parsed.finite_difference_step = 0.05;
+  parsed.interior_tolerance     = 0.5;
+  parsed.response_tolerance     = 1e-3;
+  parsed.fallback               = false;
+  parsed.parse_parameters(prm);
+  const OptimisationSettings defaults;
+  EXPECT_EQ(parsed.algorithm, defaults.algorithm);
+  EXPECT_EQ(parsed.gradient_tolerance, defaults.gradient_tolerance);
+  EXPECT_EQ(parsed.step_tolerance, defaults.step_tolerance);
+  EXPECT_EQ(parsed.max_iterations, defaults.max_iterations);
+  EXPECT_EQ(parsed.finite_difference_step, defaults.finite_difference_step);
+  EXPECT_EQ(parsed.interior_tolerance, defaults.interior_tolerance);
+  EXPECT_EQ(parsed.response_tolerance, defaults.response_tolerance);
+  EXPECT_EQ(parsed.fallback, defaults.fallback);
+  // The value prm/step-4.prm sets too, for its reduced contact model.
+  EXPECT_EQ(defaults.response_tolerance, 1e-7);
 }
 
 

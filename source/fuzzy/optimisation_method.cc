@@ -7,6 +7,7 @@
 #include <fuzzycontact/fuzzy/optimisation_method.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/patterns.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/vector.h>
 
@@ -24,39 +25,41 @@ namespace FuzzyContact
   void
   OptimisationSettings::declare_parameters(ParameterHandler &prm)
   {
+    using Patterns::Tools::to_string;
+    const OptimisationSettings defaults;
     prm.enter_subsection("Optimisation");
     prm.declare_entry("algorithm",
-                      "spectral gradient",
+                      defaults.algorithm,
                       Patterns::Selection("spectral gradient|quasi-newton"),
                       "ROL's bound-constrained algorithm: projected spectral "
                       "gradient (Barzilai-Borwein steps) or a projected "
                       "quasi-Newton (L-BFGS) line search.");
     prm.declare_entry("gradient tolerance",
-                      "1e-10",
+                      to_string(defaults.gradient_tolerance),
                       Patterns::Double(),
                       "ROL's tolerance on the projected gradient of the "
                       "scaled objective S / |S(nominal)|.");
     prm.declare_entry("step tolerance",
-                      "1e-12",
+                      to_string(defaults.step_tolerance),
                       Patterns::Double(),
                       "ROL's tolerance on the step in normalised parameters.");
     prm.declare_entry("iteration limit",
-                      "50",
+                      to_string(defaults.max_iterations),
                       Patterns::Integer(),
                       "ROL iterations per output, bound and alpha level.");
     prm.declare_entry("finite difference step",
-                      "1e-4",
+                      to_string(defaults.finite_difference_step),
                       Patterns::Double(),
                       "Step of the finite-difference sensitivities, relative "
                       "to the width of each parameter's support.");
     prm.declare_entry("interior tolerance",
-                      "1e-6",
+                      to_string(defaults.interior_tolerance),
                       Patterns::Double(),
                       "An optimum further than this (relative to the "
                       "alpha-cut width) from both ends of a parameter's "
                       "interval counts as interior.");
     prm.declare_entry("response tolerance",
-                      "1e-7",
+                      to_string(defaults.response_tolerance),
                       Patterns::Double(),
                       "Relative accuracy of the model's outputs (the FL2C "
                       "tolerance makes them accurate to about that much): "
@@ -64,7 +67,7 @@ namespace FuzzyContact
                       "response. Keep the finite difference step well above "
                       "it.");
     prm.declare_entry("multi-start fallback",
-                      "true",
+                      to_string(defaults.fallback),
                       Patterns::Bool(),
                       "On a detected non-monotone response, restart the "
                       "local optimisation from every vertex and the centre.");

@@ -47,7 +47,10 @@ namespace FuzzyContact
 {
   using namespace dealii;
 
-  /** The settings of OptimisationMethod. */
+  /**
+   * The settings of OptimisationMethod. The values here are the defaults of
+   * the parameter file too (subsection Optimisation).
+   */
   struct OptimisationSettings
   {
     /**
@@ -75,16 +78,20 @@ namespace FuzzyContact
      */
     double interior_tolerance = 1e-6;
     /**
-     * Relative accuracy of the response (e.g. the tolerance of an iterative
-     * solver inside it): differences below it between an optimum and a
-     * vertex, or between an optimum and the ends of an interval, are not
-     * taken as evidence of a non-monotone response. The finite-difference
-     * step must be well above it.
+     * Relative accuracy of the response (e.g. set by the tolerance of an
+     * iterative solver inside it; the default suits the reduced contact
+     * model of prm/step-4.prm, whose FL2C tolerance bounds the accuracy of
+     * its outputs): differences below it between an optimum and a vertex,
+     * or between an optimum and the ends of an interval, are not taken as
+     * evidence of a non-monotone response. The finite-difference step must
+     * be well above it. For a response exact to round-off (a closed form),
+     * set it near 1e-12.
      */
-    double response_tolerance = 1e-12;
+    double response_tolerance = 1e-7;
     /** Multi-start on detected non-monotonicity. */
     bool fallback = true;
 
+    /** Declares the subsection Optimisation, with the values above. */
     static void
     declare_parameters(ParameterHandler &prm);
     void
