@@ -15,6 +15,8 @@
 
 #include "test_utilities.h"
 #include <cmath>
+#include <memory>
+#include <set>
 
 using namespace FuzzyContact;
 using namespace FuzzyContact::Testing;
@@ -405,6 +407,76 @@ TEST(IntervalMethods, CacheCountsDistinctEvaluations)
   cache({1.0});
   EXPECT_EQ(calls, 2u);
   EXPECT_EQ(cache.n_evaluations(), 2u);
+}
+
+// The three methods behind their interface, on a response monotone in each
+// parameter over the boxes (so that all three are exact), with a
+// trapezoidal parameter (a core of non-zero width):
+//   S1 = p0^2 exp(-p1) + 3 p2: increasing in p0 > 0 and p2, decreasing in p1;
+//   S2 = p1 / p0: increasing in p1 > 0, decreasing in p0 > 0;
+// so the bounds over a box are S1 at (lower, upper, lower) and (upper,
+// lower, upper), S2 at (upper, lower, *) and (lower, upper, *).
+TEST(IntervalMethods, EachMethodThroughTheInterfaceIsExactWhenMonotone)
+{
+  const std::vector<FuzzyNumber> parameters = {
+    FuzzyNumber::trapezoidal(1, 1.5, 2, 3),
+    FuzzyNumber::triangular(0.1, 0.2, 0.4),
+    FuzzyNumber::triangular(-1, 0, 2)};
+  const Response response = [](const std::vector<double> &p) {
+    return std::vector<double>{p[0] * p[0] * std::exp(-p[1]) + 3 * p[2],
+                               p[1] / p[0]};
+  };
+  const auto                         alpha = alpha_levels(5);
+  std::vector<std::vector<Interval>> exact(2);
+  for (const double a : alpha)
+    {
+      const auto b = alpha_box(parameters, a);
+      exact[0].push_back(
+        {b[0].lower * b[0].lower * std::exp(-b[1].upper) + 3 * b[2].lower,
+         b[0].upper * b[0].upper * std::exp(-b[1].lower) + 3 * b[2].upper});
+      exact[1].push_back({b[1].lower / b[0].upper, b[1].upper / b[0].lower});
+    }
+
+  std::vector<std::unique_ptr<IntervalMethod>> methods;
+  methods.push_back(std::make_unique<VertexMethod>());
+  methods.push_back(std::make_unique<ExtensionPrinciple>(3));
+  methods.push_back(
+    std::make_unique<OptimisationMethod>(closed_form_settings()));
+  // The sampling methods evaluate the exact corners; the optimisation ends
+  // on them up to the round-off of the normalised coordinates.
+  const std::vector<double> tolerance = {0, 0, 1e-13};
+  std::set<std::string>     names;
+  for (unsigned int m = 0; m < methods.size(); ++m)
+    {
+      const IntervalMethod   &method = *methods[m];
+      const FuzzyOutputBounds b =
+        method.bounds(parameters, alpha, response, {"S1", "S2"}, self);
+      names.insert(method.name());
+      EXPECT_EQ(b.alpha, alpha);
+      EXPECT_GT(b.n_evaluations, 0u);
+      EXPECT_TRUE(b.notes.empty()) << method.name() << ": " << b.notes[0];
+      ASSERT_EQ(b.bounds.size(), 2u) << method.name();
+      for (unsigned int k = 0; k < 2; ++k)
+        {
+          ASSERT_EQ(b.bounds[k].size(), alpha.size());
+          EXPECT_LE(max_relative_difference(b.bounds[k], exact[k]),
+                    tolerance[m])
+            << method.name() << ", S" << k + 1;
+          // Each bound is the response where it is said to be attained.
+          for (unsigned int l = 0; l < alpha.size(); ++l)
+            {
+              const double lower = b.bounds[k][l].lower;
+              const double upper = b.bounds[k][l].upper;
+              EXPECT_NEAR(response(b.argmin[k][l])[k],
+                          lower,
+                          1e-14 * std::abs(lower));
+              EXPECT_NEAR(response(b.argmax[k][l])[k],
+                          upper,
+                          1e-14 * std::abs(upper));
+            }
+        }
+    }
+  EXPECT_EQ(names.size(), 3u); // three different names
 }
 
 // One default per setting, stated once: the parameter file's defaults are
