@@ -11,6 +11,7 @@
 #include <fuzzycontact/contact/active_set_solver.h>
 #include <fuzzycontact/contact/contact_interface.h>
 #include <fuzzycontact/contact/contact_problem.h>
+#include <fuzzycontact/contact/contact_solver.h>
 #include <fuzzycontact/contact/fl2c.h>
 #include <fuzzycontact/contact/full_order_contact.h>
 #include <fuzzycontact/contact/fuzzy_regulator.h>
@@ -803,6 +804,57 @@ TEST(ActiveSetSolver, ThrowsWithIterationsAndResidualWhenItRunsOut)
   });
   EXPECT_NE(message.find("test: the "), std::string::npos) << message;
   EXPECT_NE(message.find("max_iterations = 1"), std::string::npos) << message;
+}
+
+// The solvers by their names in a parameter file, through the ContactSolver
+// interface. Two frictional nodes (mu = 0.3), W_nn = [2 1; 1 2] 1e-6 m/N,
+// W_tt = 1e-6 m/N, no normal-tangential coupling, g_free = (-1 mm, 0, -1 mm,
+// 0): both close with (2 + 1) 1e-6 p_n = 1e-3, p_n = 1000/3 N each, and
+// stick without tangential force.
+TEST(ContactSolver, CreatedByNameTheyAgreeOnAProblemSolvedByHand)
+{
+  FullMatrix<double> W(4, 4);
+  W(0, 0) = W(2, 2) = 2e-6;
+  W(0, 2) = W(2, 0) = 1e-6;
+  W(1, 1) = W(3, 3)            = 1e-6;
+  const ContactProblem problem = small_problem(W, {-1e-3, 0, -1e-3, 0}, 0.3);
+  ActiveSetParameters  exact;
+  FL2CParameters       fl2c;
+  fl2c.tolerance = 1e-8;
+  for (const std::string name : {"reduced exact", "fl2c"})
+    {
+      const std::unique_ptr<ContactSolver> solver =
+        create_contact_solver(name, exact, fl2c);
+      ASSERT_TRUE(solver);
+      EXPECT_EQ(solver->name(), name);
+      const ContactState s = solver->solve(problem, 1, 1, "test");
+      for (const unsigned int k : {0u, 1u})
+        {
+          EXPECT_NEAR(s.p[normal_row(k)], 1000. / 3, 1e-4) << name;
+          EXPECT_NEAR(s.p[tangential_row(k)], 0., 1e-4) << name;
+          EXPECT_EQ(s.status[k], ContactStatus::stick) << name;
+        }
+    }
+  // The parameters reach the solver they belong to.
+  exact.max_iterations = 1;
+  fl2c.max_iterations  = 1;
+  EXPECT_NE(error_of([&]() {
+              create_contact_solver("reduced exact", exact, fl2c)
+                ->solve(problem, 1, 1, "test");
+            }).find("max_iterations = 1"),
+            std::string::npos);
+  EXPECT_NE(
+    error_of([&]() {
+      create_contact_solver("fl2c", exact, fl2c)->solve(problem, 1, 1, "test");
+    }).find("the fuzzy regulators did not converge in 1 iterations"),
+    std::string::npos);
+  // An unknown name is refused, naming the choices.
+  EXPECT_NE(error_of([&]() {
+              create_contact_solver("newton", exact, fl2c);
+            })
+              .find("<newton> is not a contact solver; use one of "
+                    "fl2c|reduced exact"),
+            std::string::npos);
 }
 
 

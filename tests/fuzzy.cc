@@ -3,9 +3,11 @@
 // against interval bounds known in closed form.
 
 #include <fuzzycontact/base/input.h>
+#include <fuzzycontact/fuzzy/extension_principle.h>
 #include <fuzzycontact/fuzzy/fuzzy_number.h>
 #include <fuzzycontact/fuzzy/fuzzy_parameters.h>
-#include <fuzzycontact/fuzzy/interval_analysis.h>
+#include <fuzzycontact/fuzzy/optimisation_method.h>
+#include <fuzzycontact/fuzzy/vertex_method.h>
 #include <fuzzycontact/scene/scene.h>
 #include <fuzzycontact/scene/scene_quantity.h>
 
@@ -13,6 +15,8 @@
 
 #include "test_utilities.h"
 #include <cmath>
+#include <memory>
+#include <set>
 
 using namespace FuzzyContact;
 using namespace FuzzyContact::Testing;
@@ -227,6 +231,21 @@ TEST(FuzzyParameterSet, BadInputIsRefusedWithAMessage)
 
 namespace
 {
+  // The interval methods run on one process here.
+  const MPI_Comm self = MPI_COMM_SELF;
+
+  // The closed-form responses below are exact to round-off: a response
+  // tolerance near round-off, not the default (1e-7, for the reduced
+  // contact model), so that the checks for non-monotone responses see
+  // every difference above round-off.
+  OptimisationSettings
+  closed_form_settings()
+  {
+    OptimisationSettings settings;
+    settings.response_tolerance = 1e-12;
+    return settings;
+  }
+
   const std::vector<FuzzyNumber> three_parameters = {
     FuzzyNumber::triangular(0.95, 1.0, 1.05),
     FuzzyNumber::triangular(1.9, 2.0, 2.1),
@@ -260,14 +279,17 @@ namespace
 
 TEST(IntervalMethods, AllThreeAreExactForAMonotoneResponse)
 {
-  const auto alpha = alpha_levels(11);
-  const auto v     = vertex_method(three_parameters, alpha, monotone, 2);
-  const auto e = extension_principle(three_parameters, alpha, monotone, 2, 4);
-  const auto o = optimisation_method(three_parameters,
-                                     alpha,
-                                     monotone,
-                                     {"S1", "S2"},
-                                     OptimisationSettings());
+  const auto                     alpha = alpha_levels(11);
+  const std::vector<std::string> names = {"S1", "S2"};
+  const auto                     v =
+    VertexMethod().bounds(three_parameters, alpha, monotone, names, self);
+  const auto e = ExtensionPrinciple(4).bounds(three_parameters,
+                                              alpha,
+                                              monotone,
+                                              names,
+                                              self);
+  const auto o = OptimisationMethod(closed_form_settings())
+                   .bounds(three_parameters, alpha, monotone, names, self);
   for (unsigned int k = 0; k < 2; ++k)
     {
       const auto exact = monotone_exact(k, alpha);
@@ -307,7 +329,8 @@ TEST(IntervalMethods, NonMonotoneResponseIsDetectedAndHandled)
       exact.push_back({lo0 + 0.1 * box[1].lower, hi0 + 0.1 * box[1].upper});
     }
 
-  const auto v = vertex_method(parameters, alpha, response, 1);
+  const auto v =
+    VertexMethod().bounds(parameters, alpha, response, {"S"}, self);
   EXPECT_GT(max_relative_difference(v.bounds[0], exact), 1e-3);
 
   // The Extension Principle samples the box, so its interval lies inside
@@ -316,7 +339,8 @@ TEST(IntervalMethods, NonMonotoneResponseIsDetectedAndHandled)
   double previous = 1;
   for (const unsigned int r : {5u, 21u, 81u})
     {
-      const auto e = extension_principle(parameters, alpha, response, 1, r);
+      const auto e =
+        ExtensionPrinciple(r).bounds(parameters, alpha, response, {"S"}, self);
       for (unsigned int l = 0; l < alpha.size(); ++l)
         {
           EXPECT_GE(e.bounds[0][l].lower, exact[l].lower - 1e-15);
@@ -330,11 +354,8 @@ TEST(IntervalMethods, NonMonotoneResponseIsDetectedAndHandled)
     }
   EXPECT_LT(previous, 1e-4);
 
-  const auto o = optimisation_method(parameters,
-                                     alpha,
-                                     response,
-                                     {"S"},
-                                     OptimisationSettings());
+  const auto o = OptimisationMethod(closed_form_settings())
+                   .bounds(parameters, alpha, response, {"S"}, self);
   EXPECT_LT(max_relative_difference(o.bounds[0], exact), 1e-8);
   ASSERT_FALSE(o.notes.empty());
   EXPECT_NE(o.notes.front().find("non-monotone response"), std::string::npos)
@@ -358,14 +379,18 @@ TEST(IntervalMethods, LocalOptimumTrapIsCaughtByTheVertexCheck)
     return std::vector<double>{std::cos(3 * M_PI * (p[0] - 1) / 0.1)};
   };
   const std::vector<double> alpha = {0, 1};
-  OptimisationSettings      with, without;
+  OptimisationSettings      with = closed_form_settings(), without = with;
   without.fallback = false;
-  const auto o = optimisation_method(parameters, alpha, response, {"S"}, with);
+  const auto o =
+    OptimisationMethod(with).bounds(parameters, alpha, response, {"S"}, self);
   EXPECT_NEAR(o.bounds[0][0].lower, -1., 1e-12);
   EXPECT_NEAR(o.bounds[0][0].upper, 1., 1e-12);
   ASSERT_FALSE(o.notes.empty());
-  const auto stuck =
-    optimisation_method(parameters, alpha, response, {"S"}, without);
+  const auto stuck = OptimisationMethod(without).bounds(parameters,
+                                                        alpha,
+                                                        response,
+                                                        {"S"},
+                                                        self);
   EXPECT_FALSE(stuck.notes.empty());
   EXPECT_NE(stuck.notes.front().find("no fallback"), std::string::npos);
 }
@@ -382,6 +407,106 @@ TEST(IntervalMethods, CacheCountsDistinctEvaluations)
   cache({1.0});
   EXPECT_EQ(calls, 2u);
   EXPECT_EQ(cache.n_evaluations(), 2u);
+}
+
+// The three methods behind their interface, on a response monotone in each
+// parameter over the boxes (so that all three are exact), with a
+// trapezoidal parameter (a core of non-zero width):
+//   S1 = p0^2 exp(-p1) + 3 p2: increasing in p0 > 0 and p2, decreasing in p1;
+//   S2 = p1 / p0: increasing in p1 > 0, decreasing in p0 > 0;
+// so the bounds over a box are S1 at (lower, upper, lower) and (upper,
+// lower, upper), S2 at (upper, lower, *) and (lower, upper, *).
+TEST(IntervalMethods, EachMethodThroughTheInterfaceIsExactWhenMonotone)
+{
+  const std::vector<FuzzyNumber> parameters = {
+    FuzzyNumber::trapezoidal(1, 1.5, 2, 3),
+    FuzzyNumber::triangular(0.1, 0.2, 0.4),
+    FuzzyNumber::triangular(-1, 0, 2)};
+  const Response response = [](const std::vector<double> &p) {
+    return std::vector<double>{p[0] * p[0] * std::exp(-p[1]) + 3 * p[2],
+                               p[1] / p[0]};
+  };
+  const auto                         alpha = alpha_levels(5);
+  std::vector<std::vector<Interval>> exact(2);
+  for (const double a : alpha)
+    {
+      const auto b = alpha_box(parameters, a);
+      exact[0].push_back(
+        {b[0].lower * b[0].lower * std::exp(-b[1].upper) + 3 * b[2].lower,
+         b[0].upper * b[0].upper * std::exp(-b[1].lower) + 3 * b[2].upper});
+      exact[1].push_back({b[1].lower / b[0].upper, b[1].upper / b[0].lower});
+    }
+
+  std::vector<std::unique_ptr<IntervalMethod>> methods;
+  methods.push_back(std::make_unique<VertexMethod>());
+  methods.push_back(std::make_unique<ExtensionPrinciple>(3));
+  methods.push_back(
+    std::make_unique<OptimisationMethod>(closed_form_settings()));
+  // The sampling methods evaluate the exact corners; the optimisation ends
+  // on them up to the round-off of the normalised coordinates.
+  const std::vector<double> tolerance = {0, 0, 1e-13};
+  std::set<std::string>     names;
+  for (unsigned int m = 0; m < methods.size(); ++m)
+    {
+      const IntervalMethod   &method = *methods[m];
+      const FuzzyOutputBounds b =
+        method.bounds(parameters, alpha, response, {"S1", "S2"}, self);
+      names.insert(method.name());
+      EXPECT_EQ(b.alpha, alpha);
+      EXPECT_GT(b.n_evaluations, 0u);
+      EXPECT_TRUE(b.notes.empty()) << method.name() << ": " << b.notes[0];
+      ASSERT_EQ(b.bounds.size(), 2u) << method.name();
+      for (unsigned int k = 0; k < 2; ++k)
+        {
+          ASSERT_EQ(b.bounds[k].size(), alpha.size());
+          EXPECT_LE(max_relative_difference(b.bounds[k], exact[k]),
+                    tolerance[m])
+            << method.name() << ", S" << k + 1;
+          // Each bound is the response where it is said to be attained.
+          for (unsigned int l = 0; l < alpha.size(); ++l)
+            {
+              const double lower = b.bounds[k][l].lower;
+              const double upper = b.bounds[k][l].upper;
+              EXPECT_NEAR(response(b.argmin[k][l])[k],
+                          lower,
+                          1e-14 * std::abs(lower));
+              EXPECT_NEAR(response(b.argmax[k][l])[k],
+                          upper,
+                          1e-14 * std::abs(upper));
+            }
+        }
+    }
+  EXPECT_EQ(names.size(), 3u); // three different names
+}
+
+// One default per setting, stated once: the parameter file's defaults are
+// those of the struct.
+TEST(IntervalMethods, OptimisationDefaultsOfTheParameterFileAreTheStructs)
+{
+  dealii::ParameterHandler prm;
+  OptimisationSettings::declare_parameters(prm);
+  prm.parse_input_from_string("");
+  OptimisationSettings parsed; // every value different from the default
+  parsed.algorithm              = "quasi-newton";
+  parsed.gradient_tolerance     = 0.5;
+  parsed.step_tolerance         = 0.5;
+  parsed.max_iterations         = 7;
+  parsed.finite_difference_step = 0.05;
+  parsed.interior_tolerance     = 0.5;
+  parsed.response_tolerance     = 1e-3;
+  parsed.fallback               = false;
+  parsed.parse_parameters(prm);
+  const OptimisationSettings defaults;
+  EXPECT_EQ(parsed.algorithm, defaults.algorithm);
+  EXPECT_EQ(parsed.gradient_tolerance, defaults.gradient_tolerance);
+  EXPECT_EQ(parsed.step_tolerance, defaults.step_tolerance);
+  EXPECT_EQ(parsed.max_iterations, defaults.max_iterations);
+  EXPECT_EQ(parsed.finite_difference_step, defaults.finite_difference_step);
+  EXPECT_EQ(parsed.interior_tolerance, defaults.interior_tolerance);
+  EXPECT_EQ(parsed.response_tolerance, defaults.response_tolerance);
+  EXPECT_EQ(parsed.fallback, defaults.fallback);
+  // The value prm/step-4.prm sets too, for its reduced contact model.
+  EXPECT_EQ(defaults.response_tolerance, 1e-7);
 }
 
 

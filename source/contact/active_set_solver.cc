@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <set>
 #include <sstream>
 
@@ -224,75 +225,159 @@ namespace FuzzyContact
             g[i] += W(i, j) * p[j];
       return g;
     }
-  } // namespace
 
+    // One load step of the method described in active_set_solver.h: the
+    // statuses as they evolve, the iteration count over both phases, the
+    // scaling of the complementarity functions, and the steps of the
+    // method.
+    class ActiveSetMethod
+    {
+    public:
+      ActiveSetMethod(FlexibilityOperator       &W,
+                      const LoadStep            &step,
+                      const std::vector<double> &mu,
+                      const ActiveSetParameters &parameters,
+                      const std::string         &what)
+          : W(W)
+          , step(step)
+          , mu(mu)
+          , what(what)
+          , n(mu.size())
+          , tol(parameters.tolerance)
+          , max_iterations(parameters.max_iterations)
+          , cn(n, 0.)
+          , ct(n, 0.)
+          , c_n([this](const unsigned int k) {
+            return diagonal_inverse(normal_row(k), cn, k);
+          })
+          , c_t([this](const unsigned int k) {
+            return diagonal_inverse(tangential_row(k), ct, k);
+          })
+          , status(step.previous.status)
+          , sign(step.previous.slip_sign)
+      {
+        if (status.size() != n)
+          status.assign(n, ContactStatus::open);
+        if (sign.size() != n)
+          sign.assign(n, 0);
+      }
 
-  ActiveSetSolver::ActiveSetSolver(const ActiveSetParameters &parameters)
-      : parameters_(parameters)
-  {
-  }
+      // Phase 1 unless warm started, then phase 2 until the residual is
+      // at most the tolerance; throws otherwise.
+      ContactState
+      solve()
+      {
+        if (std::all_of(status.begin(),
+                        status.end(),
+                        [](const ContactStatus s) {
+                          return s == ContactStatus::open;
+                        }))
+          frictionless_start();
+        complete_statuses();
 
-  const ActiveSetParameters &
-  ActiveSetSolver::parameters() const
-  {
-    return parameters_;
-  }
+        // Phase 2: primal-dual active set iterations.
+        ContactState               state;
+        std::set<std::vector<int>> seen;
+        seen.insert(signature(status, sign));
+        bool   murty    = false;
+        double residual = 0;
+        while (true)
+          {
+            ++iterations;
+            solve_with_statuses(state);
 
+            // The stopping test: the relative complementarity residual.
+            const std::vector<double> r =
+              complementarity_residuals(state.p,
+                                        state.g,
+                                        step.g_previous,
+                                        mu,
+                                        c_n,
+                                        c_t);
+            const double scale = residual_scale(state.p, step.g_free, c_n);
+            const double worst = *std::max_element(r.begin(), r.end());
+            residual           = (worst == 0 ? 0. : worst / scale);
+            state.iterations   = iterations;
+            state.residual     = residual;
+            if (residual <= tol)
+              return converged(state);
+            if (iterations >= max_iterations)
+              break;
 
-  ContactState
-  ActiveSetSolver::solve(FlexibilityOperator       &W,
-                         const LoadStep            &step,
-                         const std::vector<double> &mu,
-                         const std::string         &what) const
-  {
-    const unsigned int n   = mu.size();
-    const double       tol = parameters_.tolerance;
-    AssertDimension(W.size(), 2 * n);
-    AssertDimension(step.g_free.size(), 2 * n);
+            std::vector<ContactStatus> new_status = status;
+            std::vector<int>           new_sign   = sign;
+            if (!predict_statuses(state, r, scale, murty, new_status, new_sign))
+              {
+                std::ostringstream message;
+                message << what << ": the active set has settled after "
+                        << iterations
+                        << " iterations, but the complementarity residual is "
+                        << residual << " > " << tol
+                        << " (the active system is too ill-conditioned for "
+                           "this tolerance).";
+                AssertThrow(false, ExcMessage(message.str()));
+              }
+            // A cycle: from here on, one node per iteration (Murty's rule).
+            if (seen.count(signature(new_status, new_sign)) > 0)
+              {
+                if (murty)
+                  {
+                    std::ostringstream message;
+                    message << what << ": the active set cycles after "
+                            << iterations
+                            << " iterations, even under Murty's least-index "
+                               "rule; complementarity residual "
+                            << residual << ".";
+                    AssertThrow(false, ExcMessage(message.str()));
+                  }
+                murty = true;
+                seen.clear();
+                murty_step(state, r, scale, new_status, new_sign);
+              }
+            seen.insert(signature(new_status, new_sign));
+            status = new_status;
+            sign   = new_sign;
+          }
 
-    // Scaling of the complementarity functions, from the diagonal of W;
-    // computed (and the columns prepared) only for nodes that need it.
-    std::vector<double> cn(n, 0.), ct(n, 0.);
-    const auto          diagonal_inverse = [&](const unsigned int   row,
-                                      std::vector<double> &cache,
-                                      const unsigned int   k) {
-      if (cache[k] == 0)
-        {
-          W.prepare({row});
-          const double d = W(row, row);
-          AssertThrow(d > 0 && std::isfinite(d),
-                      ExcMessage(what +
-                                 ": the contact flexibility of slave "
-                                          "node " +
-                                 std::to_string(k) +
-                                 " is not positive; the node cannot move."));
-          cache[k] = 1. / d;
-        }
-      return cache[k];
-    };
-    const std::function<double(unsigned int)> c_n = [&](const unsigned int k) {
-      return diagonal_inverse(normal_row(k), cn, k);
-    };
-    const std::function<double(unsigned int)> c_t = [&](const unsigned int k) {
-      return diagonal_inverse(tangential_row(k), ct, k);
-    };
+        std::ostringstream message;
+        message << what
+                << ": the active set method did not converge in max_iterations "
+                   "= "
+                << max_iterations << " iterations (load step " << step.step
+                << "); complementarity residual " << residual << " > " << tol
+                << ".";
+        AssertThrow(false, ExcMessage(message.str()));
+        return state;
+      }
 
-    std::vector<ContactStatus> status = step.previous.status;
-    std::vector<int>           sign   = step.previous.slip_sign;
-    if (status.size() != n)
-      status.assign(n, ContactStatus::open);
-    if (sign.size() != n)
-      sign.assign(n, 0);
-    unsigned int iterations = 0;
+    private:
+      double
+      diagonal_inverse(const unsigned int   row,
+                       std::vector<double> &cache,
+                       const unsigned int   k)
+      {
+        if (cache[k] == 0)
+          {
+            W.prepare({row});
+            const double d = W(row, row);
+            AssertThrow(d > 0 && std::isfinite(d),
+                        ExcMessage(what +
+                                   ": the contact flexibility of slave "
+                                   "node " +
+                                   std::to_string(k) +
+                                   " is not positive; the node cannot move."));
+            cache[k] = 1. / d;
+          }
+        return cache[k];
+      }
 
-    // Phase 1 (without a warm start): the frictionless normal problem by
-    // Lawson and Hanson's active set method.
-    if (std::all_of(status.begin(), status.end(), [](const ContactStatus s) {
-          return s == ContactStatus::open;
-        }))
+      // Phase 1: the frictionless normal problem by Lawson and Hanson's
+      // active set method. Its closed nodes stick (slip without friction).
+      void
+      frictionless_start()
       {
         std::vector<bool>         closed(n, false), blocked(n, false);
-        std::vector<unsigned int> closed_list, columns;
+        std::vector<unsigned int> closed_list;
         Vector<double>            p(n);
         std::vector<double>       gn(n);
         const auto                update_gaps = [&]() {
@@ -321,14 +406,14 @@ namespace FuzzyContact
                 (total > 0 && -c_n(deepest) * gn[deepest] <= tol * total))
               break;
             ++iterations;
-            if (iterations > parameters_.max_iterations)
+            if (iterations > max_iterations)
               {
                 std::ostringstream message;
                 message << what
                         << ": the frictionless start (Lawson-Hanson) did not "
                            "finish in max_iterations = "
-                        << parameters_.max_iterations
-                        << " iterations (load step " << step.step
+                        << max_iterations << " iterations (load step "
+                        << step.step
                         << "); the deepest open node still "
                            "penetrates by "
                         << -gn[deepest] << " m.";
@@ -336,62 +421,7 @@ namespace FuzzyContact
               }
             closed[deepest]               = true;
             const Vector<double> p_before = p;
-
-            // Solve on the closed set; step back to the boundary while a force
-            // would become negative.
-            while (true)
-              {
-                closed_list.clear();
-                columns.clear();
-                for (unsigned int k = 0; k < n; ++k)
-                  if (closed[k])
-                    {
-                      closed_list.push_back(k);
-                      columns.push_back(normal_row(k));
-                    }
-                W.prepare(columns);
-                const unsigned int size = closed_list.size();
-                FullMatrix<double> A(size, size);
-                Vector<double>     b(size);
-                for (unsigned int r = 0; r < size; ++r)
-                  {
-                    b[r] = -step.g_free[normal_row(closed_list[r])];
-                    for (unsigned int c = 0; c < size; ++c)
-                      A(r, c) = W(normal_row(closed_list[r]),
-                                  normal_row(closed_list[c]));
-                  }
-                const Vector<double> z     = solve_dense(A, b);
-                double               alpha = 1;
-                int                  limit = -1;
-                for (unsigned int r = 0; r < size; ++r)
-                  if (z[r] <= 0)
-                    {
-                      const unsigned int k    = closed_list[r];
-                      const double       step = p[k] / (p[k] - z[r]);
-                      if (step < alpha)
-                        {
-                          alpha = step;
-                          limit = k;
-                        }
-                    }
-                for (unsigned int r = 0; r < size; ++r)
-                  {
-                    const unsigned int k = closed_list[r];
-                    p[k] += alpha * (z[r] - p[k]);
-                  }
-                if (limit < 0)
-                  break;
-                // The node that limited the step, and any other whose force
-                // reached zero, open again.
-                p[limit] = 0;
-                for (unsigned int r = 0; r < size; ++r)
-                  if (p[closed_list[r]] <= 0)
-                    {
-                      p[closed_list[r]]      = 0;
-                      closed[closed_list[r]] = false;
-                    }
-                closed[limit] = false;
-              }
+            solve_on_closed_set(closed, p);
             closed_list.clear();
             for (unsigned int k = 0; k < n; ++k)
               if (closed[k])
@@ -420,37 +450,86 @@ namespace FuzzyContact
             }
       }
 
-    for (unsigned int k = 0; k < n; ++k)
+      // The inner loop of phase 1: solve on the closed set; step back to the
+      // boundary while a force would become negative, and open the nodes
+      // whose force reached zero.
+      void
+      solve_on_closed_set(std::vector<bool> &closed, Vector<double> &p)
       {
-        if (status[k] == ContactStatus::stick && mu[k] == 0)
-          status[k] = ContactStatus::slip;
-        if (status[k] == ContactStatus::slip && sign[k] == 0)
-          sign[k] = 1;
+        std::vector<unsigned int> closed_list, columns;
+        while (true)
+          {
+            closed_list.clear();
+            columns.clear();
+            for (unsigned int k = 0; k < n; ++k)
+              if (closed[k])
+                {
+                  closed_list.push_back(k);
+                  columns.push_back(normal_row(k));
+                }
+            W.prepare(columns);
+            const unsigned int size = closed_list.size();
+            FullMatrix<double> A(size, size);
+            Vector<double>     b(size);
+            for (unsigned int r = 0; r < size; ++r)
+              {
+                b[r] = -step.g_free[normal_row(closed_list[r])];
+                for (unsigned int c = 0; c < size; ++c)
+                  A(r, c) =
+                    W(normal_row(closed_list[r]), normal_row(closed_list[c]));
+              }
+            const Vector<double> z     = solve_dense(A, b);
+            double               alpha = 1;
+            int                  limit = -1;
+            for (unsigned int r = 0; r < size; ++r)
+              if (z[r] <= 0)
+                {
+                  const unsigned int k        = closed_list[r];
+                  const double       fraction = p[k] / (p[k] - z[r]);
+                  if (fraction < alpha)
+                    {
+                      alpha = fraction;
+                      limit = k;
+                    }
+                }
+            for (unsigned int r = 0; r < size; ++r)
+              {
+                const unsigned int k = closed_list[r];
+                p[k] += alpha * (z[r] - p[k]);
+              }
+            if (limit < 0)
+              return;
+            // The node that limited the step, and any other whose force
+            // reached zero, open again.
+            p[limit] = 0;
+            for (unsigned int r = 0; r < size; ++r)
+              if (p[closed_list[r]] <= 0)
+                {
+                  p[closed_list[r]]      = 0;
+                  closed[closed_list[r]] = false;
+                }
+            closed[limit] = false;
+          }
       }
 
-    // Phase 2: primal-dual active set iterations.
-    const auto predict = [&](const ContactState &state, const unsigned int k) {
-      const double a = state.p[normal_row(k)] - c_n(k) * state.g[normal_row(k)];
-      if (a <= 0)
-        return std::make_pair(ContactStatus::open, 0);
-      if (mu[k] == 0)
-        return std::make_pair(ContactStatus::slip, 1);
-      const double dgt =
-        state.g[tangential_row(k)] - step.g_previous[tangential_row(k)];
-      const double z = state.p[tangential_row(k)] - c_t(k) * dgt;
-      if (std::abs(z) < mu[k] * a)
-        return std::make_pair(ContactStatus::stick, 0);
-      return std::make_pair(ContactStatus::slip, z >= 0 ? 1 : -1);
-    };
-
-    ContactState               state;
-    std::set<std::vector<int>> seen;
-    seen.insert(signature(status, sign));
-    bool   murty    = false;
-    double residual = 0;
-    while (true)
+      // Without friction a closed node slips; a slipping node needs a
+      // direction.
+      void
+      complete_statuses()
       {
-        ++iterations;
+        for (unsigned int k = 0; k < n; ++k)
+          {
+            if (status[k] == ContactStatus::stick && mu[k] == 0)
+              status[k] = ContactStatus::slip;
+            if (status[k] == ContactStatus::slip && sign[k] == 0)
+              sign[k] = 1;
+          }
+      }
+
+      // The forces and gaps of the linear system of the current statuses.
+      void
+      solve_with_statuses(ContactState &state)
+      {
         const StatusSystem system(W, status, sign, mu);
         Vector<double>     b(system.rows.size());
         for (unsigned int r = 0; r < b.size(); ++r)
@@ -461,35 +540,37 @@ namespace FuzzyContact
           }
         state.p = system.forces(solve_dense(system.A, b), status, sign, mu);
         state.g = gaps_of(W, step.g_free, state.p, system.columns);
+      }
 
-        const std::vector<double> r = complementarity_residuals(state.p,
-                                                                state.g,
-                                                                step.g_previous,
-                                                                mu,
-                                                                c_n,
-                                                                c_t);
-        const double scale          = residual_scale(state.p, step.g_free, c_n);
-        const double worst          = *std::max_element(r.begin(), r.end());
-        residual                    = (worst == 0 ? 0. : worst / scale);
-        state.iterations            = iterations;
-        state.residual              = residual;
-        if (residual <= tol)
-          {
-            state.status    = status;
-            state.slip_sign = sign;
-            for (unsigned int k = 0; k < n; ++k)
-              if (status[k] != ContactStatus::slip)
-                state.slip_sign[k] = 0;
-            return state;
-          }
-        if (iterations >= parameters_.max_iterations)
-          break;
+      // The status of node k that the complementarity functions predict.
+      std::pair<ContactStatus, int>
+      predict(const ContactState &state, const unsigned int k)
+      {
+        const double a =
+          state.p[normal_row(k)] - c_n(k) * state.g[normal_row(k)];
+        if (a <= 0)
+          return std::make_pair(ContactStatus::open, 0);
+        if (mu[k] == 0)
+          return std::make_pair(ContactStatus::slip, 1);
+        const double dgt =
+          state.g[tangential_row(k)] - step.g_previous[tangential_row(k)];
+        const double z = state.p[tangential_row(k)] - c_t(k) * dgt;
+        if (std::abs(z) < mu[k] * a)
+          return std::make_pair(ContactStatus::stick, 0);
+        return std::make_pair(ContactStatus::slip, z >= 0 ? 1 : -1);
+      }
 
-        // New status of the nodes whose own residual is too large (only of
-        // the first of them under Murty's rule).
-        std::vector<ContactStatus> new_status = status;
-        std::vector<int>           new_sign   = sign;
-        bool                       changed    = false;
+      // New status of the nodes whose own residual r[k] is too large (only of
+      // the first of them under Murty's rule); false if none changes.
+      bool
+      predict_statuses(const ContactState         &state,
+                       const std::vector<double>  &r,
+                       const double                scale,
+                       const bool                  murty,
+                       std::vector<ContactStatus> &new_status,
+                       std::vector<int>           &new_sign)
+      {
+        bool changed = false;
         for (unsigned int k = 0; k < n && !(murty && changed); ++k)
           if (r[k] > tol * scale)
             {
@@ -501,56 +582,83 @@ namespace FuzzyContact
                   changed       = true;
                 }
             }
-        if (!changed)
-          {
-            std::ostringstream message;
-            message << what << ": the active set has settled after "
-                    << iterations
-                    << " iterations, but the complementarity residual is "
-                    << residual << " > " << tol
-                    << " (the active system is too ill-conditioned for this "
-                       "tolerance).";
-            AssertThrow(false, ExcMessage(message.str()));
-          }
-        if (seen.count(signature(new_status, new_sign)) > 0)
-          {
-            if (murty)
-              {
-                std::ostringstream message;
-                message << what << ": the active set cycles after "
-                        << iterations
-                        << " iterations, even under Murty's least-index rule; "
-                           "complementarity residual "
-                        << residual << ".";
-                AssertThrow(false, ExcMessage(message.str()));
-              }
-            // A cycle: from here on, one node per iteration.
-            murty = true;
-            seen.clear();
-            new_status = status;
-            new_sign   = sign;
-            for (unsigned int k = 0; k < n; ++k)
-              if (r[k] > tol * scale)
-                {
-                  const auto [s, d] = predict(state, k);
-                  new_status[k]     = s;
-                  new_sign[k]       = d;
-                  break;
-                }
-          }
-        seen.insert(signature(new_status, new_sign));
-        status = new_status;
-        sign   = new_sign;
+        return changed;
       }
 
-    std::ostringstream message;
-    message << what
-            << ": the active set method did not converge in max_iterations = "
-            << parameters_.max_iterations << " iterations (load step "
-            << step.step << "); complementarity residual " << residual << " > "
-            << tol << ".";
-    AssertThrow(false, ExcMessage(message.str()));
-    return state;
+      // Murty's least-index rule: only the violated node of least index
+      // changes.
+      void
+      murty_step(const ContactState         &state,
+                 const std::vector<double>  &r,
+                 const double                scale,
+                 std::vector<ContactStatus> &new_status,
+                 std::vector<int>           &new_sign)
+      {
+        new_status = status;
+        new_sign   = sign;
+        for (unsigned int k = 0; k < n; ++k)
+          if (r[k] > tol * scale)
+            {
+              const auto [s, d] = predict(state, k);
+              new_status[k]     = s;
+              new_sign[k]       = d;
+              break;
+            }
+      }
+
+      ContactState
+      converged(ContactState &state) const
+      {
+        state.status    = status;
+        state.slip_sign = sign;
+        for (unsigned int k = 0; k < n; ++k)
+          if (status[k] != ContactStatus::slip)
+            state.slip_sign[k] = 0;
+        return state;
+      }
+
+      FlexibilityOperator       &W;
+      const LoadStep            &step;
+      const std::vector<double> &mu;
+      const std::string         &what;
+      const unsigned int         n;
+      const double               tol;
+      const unsigned int         max_iterations;
+
+      // Scaling of the complementarity functions, from the diagonal of W;
+      // computed (and the columns prepared) only for nodes that need it.
+      std::vector<double>                       cn, ct;
+      const std::function<double(unsigned int)> c_n, c_t;
+
+      std::vector<ContactStatus> status;
+      std::vector<int>           sign;
+      unsigned int               iterations = 0;
+    };
+
+  } // namespace
+
+
+  ActiveSetSolver::ActiveSetSolver(const ActiveSetParameters &parameters)
+      : parameters_(parameters)
+  {
+  }
+
+  const ActiveSetParameters &
+  ActiveSetSolver::parameters() const
+  {
+    return parameters_;
+  }
+
+
+  ContactState
+  ActiveSetSolver::solve(FlexibilityOperator       &W,
+                         const LoadStep            &step,
+                         const std::vector<double> &mu,
+                         const std::string         &what) const
+  {
+    AssertDimension(W.size(), 2 * mu.size());
+    AssertDimension(step.g_free.size(), 2 * mu.size());
+    return ActiveSetMethod(W, step, mu, parameters_, what).solve();
   }
 
 

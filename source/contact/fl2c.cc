@@ -127,6 +127,187 @@ namespace FuzzyContact
   }
 
 
+  namespace
+  {
+    // The regulators of one load step: the calibrated shape, scaled per
+    // node by g_ref and the node's flexibility (automatic calibration), or
+    // the transition points of the parameter file.
+    struct Regulators
+    {
+      bool                    automatic;
+      const MamdaniRegulator &shape;
+      double                  shape_gain;
+      double                  g_ref;
+      MamdaniRegulator        normal, tangential;
+
+      // Normal regulator: gap -> force increment (W_nn of the node).
+      double
+      normal_change(const double gap, const double w) const
+      {
+        return automatic ? shape(gap / g_ref) * g_ref / (shape_gain * w)
+                         : normal(gap);
+      }
+
+      // Tangential regulator: slip of the step -> force increment (W_tt).
+      double
+      tangential_change(const double slip, const double w) const
+      {
+        return automatic ? shape(slip / g_ref) * g_ref / (shape_gain * w)
+                         : tangential(slip);
+      }
+    };
+
+    // The scale of the gap tolerance: the largest free penetration, or, if
+    // nothing penetrates without contact forces, the largest free gap (and
+    // the forces of a previous step are released).
+    double
+    gap_scale(const LoadStep &step, const unsigned int n)
+    {
+      double g_scale = 0;
+      for (unsigned int k = 0; k < n; ++k)
+        g_scale = std::max(g_scale, -step.g_free[normal_row(k)]);
+      if (g_scale == 0)
+        for (unsigned int k = 0; k < n; ++k)
+          g_scale = std::max(g_scale, std::abs(step.g_free[normal_row(k)]));
+      return g_scale;
+    }
+
+    // 1. Reduced solve: the gaps g = g_free + W p of the current forces.
+    void
+    compute_gaps(ContactState             &state,
+                 const FullMatrix<double> &W,
+                 const Vector<double>     &g_free)
+    {
+      state.g = g_free;
+      for (unsigned int j = 0; j < state.p.size(); ++j)
+        if (state.p[j] != 0)
+          for (unsigned int i = 0; i < state.p.size(); ++i)
+            state.g[i] += W(i, j) * state.p[j];
+    }
+
+    // Whether the gaps satisfy the contact conditions within @p gap_tol.
+    bool
+    gaps_converged(const ContactState        &state,
+                   const LoadStep            &step,
+                   const std::vector<double> &mu,
+                   const double               gap_tol)
+    {
+      bool gaps_ok = true;
+      for (unsigned int k = 0; k < mu.size() && gaps_ok; ++k)
+        {
+          const double pn = state.p[normal_row(k)];
+          const double pt = state.p[tangential_row(k)];
+          const double gn = state.g[normal_row(k)];
+          const double dgt =
+            state.g[tangential_row(k)] - step.g_previous[tangential_row(k)];
+          if (pn > 0)
+            {
+              gaps_ok = std::abs(gn) <= gap_tol;
+              if (mu[k] > 0 && std::abs(pt) < mu[k] * pn)
+                gaps_ok = gaps_ok && std::abs(dgt) <= gap_tol;
+              else if (mu[k] > 0)
+                gaps_ok = gaps_ok && (pt > 0 ? dgt : -dgt) <= gap_tol;
+            }
+          else
+            gaps_ok = gn >= -gap_tol;
+        }
+      return gaps_ok;
+    }
+
+    // The complementarity residuals of @p state and their scale, with c_n
+    // and c_t from the diagonal of W.
+    std::pair<std::vector<double>, double>
+    residuals(const ContactState        &state,
+              const LoadStep            &step,
+              const FullMatrix<double>  &W,
+              const std::vector<double> &mu)
+    {
+      const auto c_n = [&](unsigned int k) {
+        return 1. / W(normal_row(k), normal_row(k));
+      };
+      const auto c_t = [&](unsigned int k) {
+        return 1. / W(tangential_row(k), tangential_row(k));
+      };
+      return {complementarity_residuals(state.p,
+                                        state.g,
+                                        step.g_previous,
+                                        mu,
+                                        c_n,
+                                        c_t),
+              residual_scale(state.p, step.g_free, c_n)};
+    }
+
+    // 2. One sweep of the regulators, node by node, most penetrating first;
+    // each acts on the gaps left by the force changes before it (the
+    // reduced solve is incremental: a change dp_j moves the gaps by W e_j
+    // dp_j). Returns the largest force change.
+    double
+    sweep(ContactState              &state,
+          const LoadStep            &step,
+          const FullMatrix<double>  &W,
+          const std::vector<double> &mu,
+          const Regulators          &regulators)
+    {
+      const unsigned int        n = mu.size();
+      std::vector<unsigned int> order;
+      for (unsigned int k = 0; k < n; ++k)
+        if (state.p[normal_row(k)] > 0 || state.g[normal_row(k)] < 0)
+          order.push_back(k);
+      std::stable_sort(order.begin(),
+                       order.end(),
+                       [&](const unsigned int i, const unsigned int j) {
+                         return state.g[normal_row(i)] < state.g[normal_row(j)];
+                       });
+      double     force_change = 0;
+      const auto apply = [&](const unsigned int row, const double change) {
+        if (change == 0)
+          return;
+        state.p[row] += change;
+        for (unsigned int i = 0; i < 2 * n; ++i)
+          state.g[i] += W(i, row) * change;
+        force_change = std::max(force_change, std::abs(change));
+      };
+      for (const unsigned int k : order)
+        {
+          const unsigned int rn = normal_row(k), rt = tangential_row(k);
+          const double dpn = regulators.normal_change(state.g[rn], W(rn, rn));
+          const double pn  = std::max(0., state.p[rn] + dpn);
+          apply(rn, pn - state.p[rn]);
+          if (mu[k] == 0)
+            continue;
+          // Tangential force capped by Coulomb's bound.
+          const double dgt = state.g[rt] - step.g_previous[rt];
+          const double dpt = regulators.tangential_change(dgt, W(rt, rt));
+          apply(rt,
+                std::clamp(state.p[rt] + dpt, -mu[k] * pn, mu[k] * pn) -
+                  state.p[rt]);
+        }
+      return force_change;
+    }
+
+    // 3. Status of the forces: open where p_n = 0, slip where |p_t| = mu
+    // p_n, stick elsewhere.
+    void
+    set_statuses(ContactState &state, const std::vector<double> &mu)
+    {
+      for (unsigned int k = 0; k < mu.size(); ++k)
+        {
+          const double pn = state.p[normal_row(k)],
+                       pt = state.p[tangential_row(k)];
+          if (pn <= 0)
+            state.status[k] = ContactStatus::open;
+          else if (mu[k] > 0 && std::abs(pt) < mu[k] * pn)
+            state.status[k] = ContactStatus::stick;
+          else
+            {
+              state.status[k]    = ContactStatus::slip;
+              state.slip_sign[k] = pt >= 0 ? 1 : -1;
+            }
+        }
+    }
+  } // namespace
+
+
   ContactState
   FL2CSolver::solve_step(const ContactProblem &problem,
                          const LoadStep       &step,
@@ -135,24 +316,17 @@ namespace FuzzyContact
     const unsigned int         n  = problem.n_nodes();
     const FullMatrix<double>  &W  = problem.W;
     const std::vector<double> &mu = problem.mu;
-    const bool                 automatic =
-      parameters_.calibration == FL2CParameters::Calibration::automatic;
-    const MamdaniRegulator normal(parameters_.gap_points,
-                                  parameters_.force_points);
-    const MamdaniRegulator tangential(parameters_.slip_points,
-                                      parameters_.friction_points);
 
     // Scales of the stopping tests.
-    double g_scale = 0;
-    for (unsigned int k = 0; k < n; ++k)
-      g_scale = std::max(g_scale, -step.g_free[normal_row(k)]);
-    if (g_scale == 0)
-      // Nothing penetrates without contact forces: the gaps themselves
-      // set the scale (and the forces of a previous step are released).
-      for (unsigned int k = 0; k < n; ++k)
-        g_scale = std::max(g_scale, std::abs(step.g_free[normal_row(k)]));
-    const double g_ref   = g_scale / 3;
-    const double gap_tol = parameters_.tolerance * g_scale;
+    const double     g_scale = gap_scale(step, n);
+    const double     gap_tol = parameters_.tolerance * g_scale;
+    const Regulators regulators{
+      parameters_.calibration == FL2CParameters::Calibration::automatic,
+      shape,
+      shape_gain,
+      g_scale / 3,
+      MamdaniRegulator(parameters_.gap_points, parameters_.force_points),
+      MamdaniRegulator(parameters_.slip_points, parameters_.friction_points)};
 
     ContactState state;
     state.p = step.previous.p;
@@ -164,37 +338,13 @@ namespace FuzzyContact
     double force_change = std::numeric_limits<double>::infinity();
     for (unsigned int it = 1; it <= parameters_.max_iterations; ++it)
       {
-        // 1. Reduced solve: the gaps of the current forces.
-        state.g = step.g_free;
-        for (unsigned int j = 0; j < 2 * n; ++j)
-          if (state.p[j] != 0)
-            for (unsigned int i = 0; i < 2 * n; ++i)
-              state.g[i] += W(i, j) * state.p[j];
+        compute_gaps(state, W, step.g_free);
 
-        // Convergence: the gaps, and the force change of the last step.
+        // Convergence: the gaps, and the force change of the last sweep.
         double total = 0;
         for (unsigned int k = 0; k < n; ++k)
           total += state.p[normal_row(k)];
-        bool gaps_ok = true;
-        for (unsigned int k = 0; k < n && gaps_ok; ++k)
-          {
-            const double pn = state.p[normal_row(k)];
-            const double pt = state.p[tangential_row(k)];
-            const double gn = state.g[normal_row(k)];
-            const double dgt =
-              state.g[tangential_row(k)] - step.g_previous[tangential_row(k)];
-            if (pn > 0)
-              {
-                gaps_ok = std::abs(gn) <= gap_tol;
-                if (mu[k] > 0 && std::abs(pt) < mu[k] * pn)
-                  gaps_ok = gaps_ok && std::abs(dgt) <= gap_tol;
-                else if (mu[k] > 0)
-                  gaps_ok = gaps_ok && (pt > 0 ? dgt : -dgt) <= gap_tol;
-              }
-            else
-              gaps_ok = gn >= -gap_tol;
-          }
-        if (gaps_ok &&
+        if (gaps_converged(state, step, mu, gap_tol) &&
             (force_change <= parameters_.tolerance * total || total == 0))
           {
             state.iterations = it;
@@ -202,22 +352,8 @@ namespace FuzzyContact
           }
         if (it == parameters_.max_iterations)
           {
-            state.iterations            = it;
-            const std::vector<double> r = complementarity_residuals(
-              state.p,
-              state.g,
-              step.g_previous,
-              mu,
-              [&](unsigned int k) {
-                return 1. / W(normal_row(k), normal_row(k));
-              },
-              [&](unsigned int k) {
-                return 1. / W(tangential_row(k), tangential_row(k));
-              });
-            const double scale =
-              residual_scale(state.p, step.g_free, [&](unsigned int k) {
-                return 1. / W(normal_row(k), normal_row(k));
-              });
+            state.iterations      = it;
+            const auto [r, scale] = residuals(state, step, W, mu);
             std::ostringstream message;
             message << what << ": the fuzzy regulators did not converge in "
                     << parameters_.max_iterations << " iterations (load step "
@@ -226,84 +362,13 @@ namespace FuzzyContact
                     << ", last force change " << force_change << " N.";
             AssertThrow(false, ExcMessage(message.str()));
           }
-
-        // 2. Regulators, node by node, most penetrating first; each acts on
-        // the gaps left by the force changes before it (the reduced solve
-        // is incremental: a change dp_j moves the gaps by W e_j dp_j).
-        std::vector<unsigned int> order;
-        for (unsigned int k = 0; k < n; ++k)
-          if (state.p[normal_row(k)] > 0 || state.g[normal_row(k)] < 0)
-            order.push_back(k);
-        std::stable_sort(order.begin(),
-                         order.end(),
-                         [&](const unsigned int i, const unsigned int j) {
-                           return state.g[normal_row(i)] <
-                                  state.g[normal_row(j)];
-                         });
-        const auto apply = [&](const unsigned int row, const double change) {
-          if (change == 0)
-            return;
-          state.p[row] += change;
-          for (unsigned int i = 0; i < 2 * n; ++i)
-            state.g[i] += W(i, row) * change;
-          force_change = std::max(force_change, std::abs(change));
-        };
-        force_change = 0;
-        for (const unsigned int k : order)
-          {
-            const unsigned int rn = normal_row(k), rt = tangential_row(k);
-            // Normal regulator: gap -> force increment.
-            const double dpn = automatic ? shape(state.g[rn] / g_ref) * g_ref /
-                                             (shape_gain * W(rn, rn))
-                                         : normal(state.g[rn]);
-            const double pn  = std::max(0., state.p[rn] + dpn);
-            apply(rn, pn - state.p[rn]);
-            if (mu[k] == 0)
-              continue;
-            // Tangential regulator: slip of the step -> force increment,
-            // capped by Coulomb's bound.
-            const double dgt = state.g[rt] - step.g_previous[rt];
-            const double dpt =
-              automatic ? shape(dgt / g_ref) * g_ref / (shape_gain * W(rt, rt))
-                        : tangential(dgt);
-            apply(rt,
-                  std::clamp(state.p[rt] + dpt, -mu[k] * pn, mu[k] * pn) -
-                    state.p[rt]);
-          }
+        force_change = sweep(state, step, W, mu, regulators);
       }
 
-    // 3. Status of the converged forces.
-    for (unsigned int k = 0; k < n; ++k)
-      {
-        const double pn = state.p[normal_row(k)],
-                     pt = state.p[tangential_row(k)];
-        if (pn <= 0)
-          state.status[k] = ContactStatus::open;
-        else if (mu[k] > 0 && std::abs(pt) < mu[k] * pn)
-          state.status[k] = ContactStatus::stick;
-        else
-          {
-            state.status[k]    = ContactStatus::slip;
-            state.slip_sign[k] = pt >= 0 ? 1 : -1;
-          }
-      }
-    const auto c_n = [&](unsigned int k) {
-      return 1. / W(normal_row(k), normal_row(k));
-    };
-    const auto c_t = [&](unsigned int k) {
-      return 1. / W(tangential_row(k), tangential_row(k));
-    };
-    const std::vector<double> r     = complementarity_residuals(state.p,
-                                                            state.g,
-                                                            step.g_previous,
-                                                            mu,
-                                                            c_n,
-                                                            c_t);
-    const double              worst = *std::max_element(r.begin(), r.end());
-    state.residual =
-      worst == 0 ? 0. : worst / residual_scale(state.p, step.g_free, c_n);
+    set_statuses(state, mu);
+    const auto [r, scale] = residuals(state, step, W, mu);
+    const double worst    = *std::max_element(r.begin(), r.end());
+    state.residual        = worst == 0 ? 0. : worst / scale;
     return state;
   }
-
-
 } // namespace FuzzyContact

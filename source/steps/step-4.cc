@@ -35,9 +35,11 @@
 
 #include <fuzzycontact/base/input.h>
 #include <fuzzycontact/base/program.h>
+#include <fuzzycontact/fuzzy/extension_principle.h>
 #include <fuzzycontact/fuzzy/fuzzy_number.h>
 #include <fuzzycontact/fuzzy/fuzzy_parameters.h>
-#include <fuzzycontact/fuzzy/interval_analysis.h>
+#include <fuzzycontact/fuzzy/optimisation_method.h>
+#include <fuzzycontact/fuzzy/vertex_method.h>
 #include <fuzzycontact/output/fuzzy_report.h>
 #include <fuzzycontact/output/output_files.h>
 #include <fuzzycontact/output/report.h>
@@ -273,22 +275,21 @@ namespace Step4
     const Response exact = [&](const std::vector<double> &p) {
       return model->full_order(p);
     };
-    const std::vector<double> &alpha = results.alpha;
+    // Every method through the IntervalMethod interface, timed.
+    const auto bounds = [&](const IntervalMethod &method,
+                            const Response       &response,
+                            const std::string    &section) {
+      TimerOutput::Scope scope(timer, section);
+      return method.bounds(numbers, results.alpha, response, names, comm);
+    };
 
-    {
-      TimerOutput::Scope scope(timer, "optimisation (reduced model)");
-      results.optimisation = optimisation_method(numbers,
-                                                 alpha,
-                                                 reduced,
-                                                 names,
-                                                 parameters.optimisation,
-                                                 comm);
-    }
+    results.optimisation = bounds(OptimisationMethod(parameters.optimisation),
+                                  reduced,
+                                  "optimisation (reduced model)");
     if (parameters.vertex_method)
       {
-        TimerOutput::Scope scope(timer, "vertex method (reduced model)");
         results.vertex =
-          vertex_method(numbers, alpha, reduced, names.size(), comm);
+          bounds(VertexMethod(), reduced, "vertex method (reduced model)");
         results.has_vertex = true;
       }
     if (parameters.extension_principle)
@@ -298,7 +299,7 @@ namespace Step4
           "Extension Principle: " +
           std::to_string(
             extension_principle_size(numbers,
-                                     alpha,
+                                     results.alpha,
                                      parameters.points_per_dimension)) +
           " exact full-order solves (" +
           std::to_string(parameters.points_per_dimension) +
@@ -306,13 +307,10 @@ namespace Step4
           (parameters.reuse_factorisations ? "factorisations reused where exact"
                                            : "independent analyses") +
           ")\n");
-        TimerOutput::Scope scope(timer, "extension principle (full order)");
-        results.reference     = extension_principle(numbers,
-                                                alpha,
-                                                exact,
-                                                names.size(),
-                                                parameters.points_per_dimension,
-                                                comm);
+        results.reference =
+          bounds(ExtensionPrinciple(parameters.points_per_dimension),
+                 exact,
+                 "extension principle (full order)");
         results.has_reference = true;
       }
   }

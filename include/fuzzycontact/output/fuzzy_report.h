@@ -10,7 +10,7 @@
 #define fuzzycontact_output_fuzzy_report_h
 
 #include <fuzzycontact/fuzzy/fuzzy_parameters.h>
-#include <fuzzycontact/fuzzy/interval_analysis.h>
+#include <fuzzycontact/fuzzy/interval_method.h>
 #include <fuzzycontact/output/output_files.h>
 #include <fuzzycontact/output/report.h>
 #include <fuzzycontact/study/observations.h>

@@ -1,0 +1,126 @@
+// Interval methods: the interval bounds of a model's outputs over the
+// alpha-cuts of its fuzzy parameters, the core of a fuzzy propagation.
+//
+// At every alpha level the fuzzy parameters span a box (the product of their
+// alpha-cuts), and each output's alpha-cut is [min S, max S] over that box.
+// An IntervalMethod finds these intervals for all outputs and levels at
+// once. Three are provided, one file each, with their own cost and risk:
+//
+//  - OptimisationMethod (optimisation_method.h): per output, a
+//    bound-constrained local minimisation and maximisation (Trilinos ROL,
+//    projected spectral gradient by default) started at the optimum of the
+//    level above, with checks for non-monotone responses and a multi-start
+//    fallback: the paper's method, cheap when the response is smooth;
+//  - VertexMethod (vertex_method.h): the 2^n corners of each box, exact for
+//    responses that are monotone in each parameter, wrong otherwise;
+//  - ExtensionPrinciple (extension_principle.h): the reference, a tensor
+//    grid of every box (corners included), nested over the levels.
+//
+// Methods spread their work over the ranks of an MPI communicator and give
+// every rank the same bounds, which do not depend on the number of ranks
+// provided the response is a pure function of its parameters (no state
+// carried between evaluations).
+//
+// To add an interval method: derive from IntervalMethod and implement name()
+// and bounds() in a header and source file of their own in fuzzy/; a method
+// that evaluates a set of points fixed in advance derives from
+// SamplingMethod (sampling_method.h) and gives only its points.
+
+#ifndef fuzzycontact_fuzzy_interval_method_h
+#define fuzzycontact_fuzzy_interval_method_h
+
+#include <fuzzycontact/fuzzy/fuzzy_number.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace FuzzyContact
+{
+  /** A model: values of the parameters in, values of the outputs out. */
+  using Response =
+    std::function<std::vector<double>(const std::vector<double> &)>;
+
+  /**
+   * Remembers every evaluation of a response (keyed by the exact parameter
+   * values), so that the corners and optima that several outputs and levels
+   * share are computed once, and counts the evaluations really made.
+   */
+  class EvaluationCache
+  {
+  public:
+    explicit EvaluationCache(const Response &response);
+
+    const std::vector<double> &
+    operator()(const std::vector<double> &parameters);
+
+    /** Evaluations of the response (cache misses). */
+    unsigned long
+    n_evaluations() const;
+
+  private:
+    Response                                           response;
+    std::map<std::vector<double>, std::vector<double>> values;
+  };
+
+  /** The alpha-cut box: one interval per parameter. */
+  std::vector<Interval>
+  alpha_box(const std::vector<FuzzyNumber> &parameters, const double alpha);
+
+  /**
+   * Interval bounds of every output at every level, and where they are
+   * attained.
+   */
+  struct FuzzyOutputBounds
+  {
+    std::vector<double> alpha;
+    /** bounds[output][level] */
+    std::vector<std::vector<Interval>> bounds;
+    /** Parameters at which the lower and upper bounds are attained. */
+    std::vector<std::vector<std::vector<double>>> argmin, argmax;
+    /** Evaluations of the response, over all ranks. */
+    unsigned long n_evaluations = 0;
+    /** Wall time [s] (the longest over all ranks). */
+    double wall_time = 0;
+    /** What was detected (non-monotone responses) and done about it. */
+    std::vector<std::string> notes;
+  };
+
+  /**
+   * Largest relative difference between two sets of bounds over all levels
+   * and both ends, for one output: max |b - r| / max(|r|, floor).
+   */
+  double
+  max_relative_difference(const std::vector<Interval> &bounds,
+                          const std::vector<Interval> &reference,
+                          const double                 floor = 0);
+
+  /** The interface of the interval methods (see the top of this file). */
+  class IntervalMethod
+  {
+  public:
+    virtual ~IntervalMethod() = default;
+
+    /** The name of the method in reports. */
+    virtual std::string
+    name() const = 0;
+
+    /**
+     * The bounds of the outputs of @p response (one per entry of
+     * @p output_names, which also label the notes) at the levels @p alpha
+     * of the fuzzy @p parameters, computed on the ranks of @p comm and
+     * returned on every rank.
+     */
+    virtual FuzzyOutputBounds
+    bounds(const std::vector<FuzzyNumber> &parameters,
+           const std::vector<double>      &alpha,
+           const Response                 &response,
+           const std::vector<std::string> &output_names,
+           const MPI_Comm                  comm) const = 0;
+  };
+} // namespace FuzzyContact
+
+#endif

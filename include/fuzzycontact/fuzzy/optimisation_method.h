@@ -1,0 +1,130 @@
+// The optimisation method, the paper's interval method: the bounds of each
+// output at each level as the results of bound-constrained local
+// optimisation over the level's box.
+//
+// For every output there are two chains, one for the lower bound
+// (minimisation) and one for the upper (maximisation). A chain goes through
+// the levels from the core (alpha = 1) down to the support (alpha = 0),
+// each level started at the optimum of the level above. The local
+// optimiser is Trilinos ROL's projected spectral gradient method
+// (Barzilai-Borwein steps) by default, or its projected quasi-Newton
+// (L-BFGS) line search, on the parameters normalised by their supports and
+// the output scaled by its nominal value, with finite-difference
+// sensitivities (central, one-sided at the ends of the box). Evaluations
+// are cached, so the points several chains share are computed once.
+//
+// Cheap when the response is smooth and monotone; a non-monotone response
+// is detected and answered at every level:
+//  - an optimum inside a parameter's interval is compared with the two
+//    ends of the interval (the other coordinates kept): an interior
+//    optimum, or an interior stationary point that is no optimum, is
+//    reported; an end that is better (or as good) is taken;
+//  - the vertices of the box are compared with the optimum;
+//  - on either finding, a multi-start from every vertex and the centre of
+//    the box keeps the best local optimum (unless the fallback is off);
+//  - a sensitivity that changes sign between the levels' optima is
+//    reported.
+// Differences below the response tolerance (the model's accuracy) are no
+// evidence of non-monotonicity.
+//
+// The chains (one per output and direction) are dealt to the MPI ranks and
+// gathered on all of them; the bounds do not depend on the number of ranks
+// for a response that is a pure function of its parameters.
+//
+// It is one of the interval methods of interval_method.h (see there for
+// the others and for where to add one).
+
+#ifndef fuzzycontact_fuzzy_optimisation_method_h
+#define fuzzycontact_fuzzy_optimisation_method_h
+
+#include <fuzzycontact/fuzzy/interval_method.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace FuzzyContact
+{
+  using namespace dealii;
+
+  /**
+   * The settings of OptimisationMethod. The values here are the defaults of
+   * the parameter file too (subsection Optimisation).
+   */
+  struct OptimisationSettings
+  {
+    /**
+     * ROL's algorithm for the bound-constrained problems: "spectral
+     * gradient" (projected gradient with Barzilai-Borwein steps, the
+     * default: the responses are nearly linear and badly scaled, and long
+     * spectral steps reach the vertices in a few iterations) or
+     * "quasi-newton" (projected L-BFGS line search).
+     */
+    std::string algorithm = "spectral gradient";
+    /** ROL's tolerance on the projected gradient (scaled objective). */
+    double gradient_tolerance = 1e-10;
+    /** ROL's tolerance on the step (normalised parameters). */
+    double step_tolerance = 1e-12;
+    /** ROL iterations per bound and level. */
+    unsigned int max_iterations = 50;
+    /**
+     * Finite-difference step for the sensitivities, relative to the width
+     * of each parameter's support.
+     */
+    double finite_difference_step = 1e-4;
+    /**
+     * A coordinate of an optimum counts as interior if it lies further than
+     * this (relative to its alpha-cut width) from both ends.
+     */
+    double interior_tolerance = 1e-6;
+    /**
+     * Relative accuracy of the response (e.g. set by the tolerance of an
+     * iterative solver inside it; the default suits the reduced contact
+     * model of prm/step-4.prm, whose FL2C tolerance bounds the accuracy of
+     * its outputs): differences below it between an optimum and a vertex,
+     * or between an optimum and the ends of an interval, are not taken as
+     * evidence of a non-monotone response. The finite-difference step must
+     * be well above it. For a response exact to round-off (a closed form),
+     * set it near 1e-12.
+     */
+    double response_tolerance = 1e-7;
+    /** Multi-start on detected non-monotonicity. */
+    bool fallback = true;
+
+    /** Declares the subsection Optimisation, with the values above. */
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  class OptimisationMethod : public IntervalMethod
+  {
+  public:
+    explicit OptimisationMethod(const OptimisationSettings &settings = {});
+
+    /** "optimisation". */
+    std::string
+    name() const override;
+
+    /**
+     * Bound-constrained optimisation per output, bound and level, from
+     * alpha = 1 down to 0, each level started at the optimum of the one
+     * above (see the top of this file).
+     */
+    FuzzyOutputBounds
+    bounds(const std::vector<FuzzyNumber> &parameters,
+           const std::vector<double>      &alpha,
+           const Response                 &response,
+           const std::vector<std::string> &output_names,
+           const MPI_Comm                  comm) const override;
+
+    const OptimisationSettings &
+    settings() const;
+
+  private:
+    OptimisationSettings settings_;
+  };
+} // namespace FuzzyContact
+
+#endif
