@@ -10,11 +10,15 @@
 #include <fuzzycontact/fe/component.h>
 #include <fuzzycontact/modal/modal_solver.h>
 #include <fuzzycontact/modal/mode_comparison.h>
+#include <fuzzycontact/reanalysis/combined_approximations.h>
 #include <fuzzycontact/reanalysis/eigen_derivatives.h>
-#include <fuzzycontact/reanalysis/modal_reanalysis.h>
+#include <fuzzycontact/reanalysis/exact_resolve.h>
+#include <fuzzycontact/reanalysis/first_order_taylor.h>
+#include <fuzzycontact/reanalysis/homotopy_perturbation.h>
 #include <fuzzycontact/reanalysis/parameter_independent_reanalysis.h>
 #include <fuzzycontact/reanalysis/reanalysis_parameters.h>
 #include <fuzzycontact/reanalysis/reduced_basis.h>
+#include <fuzzycontact/reanalysis/residual_check.h>
 #include <fuzzycontact/scene/scene.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>

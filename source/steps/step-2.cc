@@ -30,9 +30,13 @@
 #include <fuzzycontact/modal/modal_solver.h>
 #include <fuzzycontact/modal/mode_comparison.h>
 #include <fuzzycontact/output/output_files.h>
-#include <fuzzycontact/reanalysis/modal_reanalysis.h>
+#include <fuzzycontact/reanalysis/combined_approximations.h>
+#include <fuzzycontact/reanalysis/exact_resolve.h>
+#include <fuzzycontact/reanalysis/first_order_taylor.h>
+#include <fuzzycontact/reanalysis/homotopy_perturbation.h>
 #include <fuzzycontact/reanalysis/parameter_independent_reanalysis.h>
 #include <fuzzycontact/reanalysis/reanalysis_parameters.h>
+#include <fuzzycontact/reanalysis/residual_check.h>
 #include <fuzzycontact/scene/scene.h>
 
 #include <deal.II/base/parameter_handler.h>

@@ -36,9 +36,10 @@
 #include <fuzzycontact/fe/component.h>
 #include <fuzzycontact/modal/modal_solver.h>
 #include <fuzzycontact/reanalysis/eigen_derivatives.h>
-#include <fuzzycontact/reanalysis/modal_reanalysis.h>
+#include <fuzzycontact/reanalysis/reanalysis_method.h>
 #include <fuzzycontact/reanalysis/reanalysis_parameters.h>
 #include <fuzzycontact/reanalysis/reduced_basis.h>
+#include <fuzzycontact/reanalysis/residual_check.h>
 
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/full_matrix.h>

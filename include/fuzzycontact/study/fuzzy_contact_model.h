@@ -55,8 +55,8 @@
 #include <fuzzycontact/fe/component.h>
 #include <fuzzycontact/fuzzy/fuzzy_parameters.h>
 #include <fuzzycontact/modal/modal_solver.h>
-#include <fuzzycontact/reanalysis/modal_reanalysis.h>
 #include <fuzzycontact/reanalysis/parameter_independent_reanalysis.h>
+#include <fuzzycontact/reanalysis/reanalysis_method.h>
 #include <fuzzycontact/reduction/reduced_model.h>
 #include <fuzzycontact/scene/scene.h>
 
