@@ -15,6 +15,7 @@
 #include <fuzzycontact/reanalysis/exact_resolve.h>
 #include <fuzzycontact/reanalysis/first_order_taylor.h>
 #include <fuzzycontact/reanalysis/homotopy_perturbation.h>
+#include <fuzzycontact/reanalysis/order_selection.h>
 #include <fuzzycontact/reanalysis/parameter_independent_reanalysis.h>
 #include <fuzzycontact/reanalysis/reanalysis_parameters.h>
 #include <fuzzycontact/reanalysis/reduced_basis.h>
@@ -823,6 +824,117 @@ TEST(CombinedApproximations, LiesBetweenTaylorAndHptp)
   EXPECT_LT(e_ca, e_taylor / 10);
   EXPECT_LT(e_hptp, e_ca / 10);
   EXPECT_LT(e_ca, 1e-4);
+}
+
+
+// ----------------------------------------------------------------------------
+// The order rule
+// ----------------------------------------------------------------------------
+
+// The order rule on eigenvalues whose frequencies are chosen so that the
+// estimates are known by hand: f = sqrt(lambda) is (10, 20) at order 1,
+// (9.9, 20) at order 2 and (9.9, 19.998) at order 3, so the change of order
+// 1 is 0.1 / 9.9 = 1.0101e-2 and that of order 2 is 0.002 / 19.998 =
+// 1.0001e-4.
+TEST(OrderSelection, ChoosesTheLowestOrderMeetingTheTolerance)
+{
+  const std::vector<std::vector<double>> f     = {{10, 20},
+                                                  {9.9, 20},
+                                                  {9.9, 19.998}};
+  unsigned int                           calls = 0;
+  const auto eigenvalues                       = [&](const unsigned int n) {
+    ++calls;
+    std::vector<double> lambda;
+    for (const double x : f[n - 1])
+      lambda.push_back(x * x);
+    return lambda;
+  };
+  const double change_1 = 0.1 / 9.9, change_2 = 0.002 / 19.998;
+  EXPECT_NEAR(relative_frequency_change(eigenvalues(1), eigenvalues(2), 2),
+              change_1,
+              1e-14);
+
+  // Tolerance 1e-3: order 2 (order 3 is computed for its change).
+  calls              = 0;
+  OrderSelection sel = order_for_tolerance(3, 1e-3, 2, eigenvalues);
+  EXPECT_EQ(sel.order, 2u);
+  EXPECT_TRUE(sel.tolerance_met);
+  ASSERT_EQ(sel.estimates.size(), 2u);
+  EXPECT_NEAR(sel.estimates[0].estimate, change_1, 1e-14);
+  EXPECT_NEAR(sel.estimates[0].change_to_next_order, change_1, 1e-14);
+  EXPECT_NEAR(sel.estimates[1].estimate, change_2, 1e-14);
+  EXPECT_EQ(calls, 3u);
+
+  // Every order estimated: the same order; the highest has no estimate.
+  sel = order_for_tolerance(3, 1e-3, 2, eigenvalues, {}, true);
+  EXPECT_EQ(sel.order, 2u);
+  ASSERT_EQ(sel.estimates.size(), 3u);
+  EXPECT_TRUE(std::isnan(sel.estimates[2].estimate));
+  EXPECT_TRUE(std::isnan(sel.estimates[2].change_to_next_order));
+
+  // Only the first mode compared: order 2 does not change it at all.
+  sel = order_for_tolerance(3, 1e-5, 1, eigenvalues);
+  EXPECT_EQ(sel.order, 2u);
+  EXPECT_EQ(sel.estimates[1].estimate, 0.);
+
+  // No order meets 1e-5 for both modes: the highest, not met.
+  sel = order_for_tolerance(3, 1e-5, 2, eigenvalues);
+  EXPECT_EQ(sel.order, 3u);
+  EXPECT_FALSE(sel.tolerance_met);
+
+  // With residuals eta = 0.01, 0.1, 0.001: the estimate of order n is also
+  // eta^2 / 2 = 5e-5, 5e-3, 5e-7, so order 2 (5e-3) fails 1e-3 and order 3
+  // (5e-7, no change to compare) meets it. A NaN eta is ignored.
+  const std::vector<double> eta = {0.01, 0.1, 0.001};
+  sel = order_for_tolerance(3, 1e-3, 2, eigenvalues, [&](const unsigned int n) {
+    return eta[n - 1];
+  });
+  EXPECT_EQ(sel.order, 3u);
+  EXPECT_TRUE(sel.tolerance_met);
+  EXPECT_NEAR(sel.estimates[0].estimate, change_1, 1e-14);
+  EXPECT_NEAR(sel.estimates[1].estimate, 5e-3, 1e-15);
+  EXPECT_NEAR(sel.estimates[1].change_to_next_order, change_2, 1e-14);
+  EXPECT_NEAR(sel.estimates[2].estimate, 5e-7, 1e-18);
+  sel = order_for_tolerance(3, 1e-3, 2, eigenvalues, [](const unsigned int) {
+    return std::nan("");
+  });
+  EXPECT_EQ(sel.order, 2u);
+}
+
+// The parameter-independent HPTP chooses its order by the same rule.
+TEST(OrderSelection, IsTheRuleOfTheParameterIndependentReanalysis)
+{
+  Study                          s("cantilever-zones.prm");
+  ParameterIndependentReanalysis pi;
+  pi.offline(*s.component, s.nominal, {"beam.root.E", "beam.tip.rho"}, 3, 1e-6);
+  const std::vector<double> t = {0.2, -0.15};
+  for (const bool check_residuals : {false, true})
+    for (const double tolerance : {1e-4, 1e-6, 1e-8})
+      {
+        const ReanalysedModes chosen =
+          pi.online_to_tolerance(t, tolerance, check_residuals);
+        std::function<double(unsigned int)> eta;
+        if (check_residuals)
+          eta = [&](const unsigned int n) {
+            const auto r = pi.residuals(t, pi.online(t, n));
+            return *std::max_element(r.energy.begin(), r.energy.end());
+          };
+        const OrderSelection rule = order_for_tolerance(
+          3,
+          tolerance,
+          9,
+          [&](const unsigned int n) {
+            return pi.online(t, n).eigenvalues;
+          },
+          eta);
+        EXPECT_EQ(chosen.order, rule.order);
+        EXPECT_EQ(chosen.tolerance_met, rule.tolerance_met);
+        const double estimate = rule.estimates[rule.order - 1].estimate;
+        if (std::isnan(estimate))
+          EXPECT_TRUE(std::isnan(chosen.estimated_error));
+        else
+          EXPECT_DOUBLE_EQ(chosen.estimated_error, estimate);
+      }
 }
 
 

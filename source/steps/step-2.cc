@@ -34,6 +34,7 @@
 #include <fuzzycontact/reanalysis/exact_resolve.h>
 #include <fuzzycontact/reanalysis/first_order_taylor.h>
 #include <fuzzycontact/reanalysis/homotopy_perturbation.h>
+#include <fuzzycontact/reanalysis/order_selection.h>
 #include <fuzzycontact/reanalysis/parameter_independent_reanalysis.h>
 #include <fuzzycontact/reanalysis/reanalysis_parameters.h>
 #include <fuzzycontact/reanalysis/residual_check.h>
@@ -608,50 +609,33 @@ namespace Step2
                     }
                   own.push_back(std::move(row));
                 }
-              // The order a tolerance asks for. Two a-posteriori estimates of
-              // the relative frequency error of order n: the change to order
-              // n + 1 (Ritz values on nested bases decrease towards the exact
-              // ones, so this is a lower estimate), and, with the residual
-              // check, eta^2 / 2 from the energy-norm residual eta (which also
-              // sees a method that stagnates, and covers the highest order).
-              // The order is the lowest whose estimates meet the tolerance.
+              // The order a tolerance asks for, by the library's rule
+              // (reanalysis/order_selection.h): the estimate of order n is
+              // its change to order n + 1 and, with the residual check,
+              // eta^2 / 2 from the energy-norm residual eta; the order is
+              // the lowest whose estimate meets the tolerance. Every order
+              // is estimated here, for the table.
               if (method.has_order())
                 {
-                  unsigned int chosen = own.size();
+                  const OrderSelection selection = order_for_tolerance(
+                    own.size(),
+                    settings.order_tolerance,
+                    n_modes,
+                    [&](const unsigned int n) {
+                      return own[n - 1].result.eigenvalues;
+                    },
+                    [&](const unsigned int n) {
+                      return own[n - 1].energy_residual;
+                    },
+                    /*all_orders=*/true);
                   for (unsigned int i = 0; i < own.size(); ++i)
                     {
-                      double estimate = -1;
-                      if (i + 1 < own.size())
-                        {
-                          double change = 0;
-                          for (unsigned int j = 0; j < n_modes; ++j)
-                            {
-                              const double a =
-                                std::sqrt(own[i].result.eigenvalues[j]);
-                              const double b =
-                                std::sqrt(own[i + 1].result.eigenvalues[j]);
-                              change = std::max(change, std::abs(a - b) / b);
-                            }
-                          own[i].change = change;
-                          estimate      = change;
-                        }
-                      if (std::isfinite(own[i].energy_residual))
-                        estimate = std::max(estimate,
-                                            0.5 * own[i].energy_residual *
-                                              own[i].energy_residual);
-                      if (estimate >= 0)
-                        own[i].estimate = estimate;
-                      if (estimate >= 0 &&
-                          estimate <= settings.order_tolerance &&
-                          chosen == own.size())
-                        chosen = i;
+                      own[i].change =
+                        selection.estimates[i].change_to_next_order;
+                      own[i].estimate = selection.estimates[i].estimate;
                     }
-                  if (chosen == own.size())
-                    {
-                      chosen              = own.size() - 1;
-                      own[chosen].not_met = true;
-                    }
-                  own[chosen].selected = true;
+                  own[selection.order - 1].selected = true;
+                  own[selection.order - 1].not_met  = !selection.tolerance_met;
                 }
               else
                 own[0].selected = true;
