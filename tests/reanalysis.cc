@@ -17,6 +17,7 @@
 #include <fuzzycontact/reanalysis/homotopy_perturbation.h>
 #include <fuzzycontact/reanalysis/order_selection.h>
 #include <fuzzycontact/reanalysis/parameter_independent_reanalysis.h>
+#include <fuzzycontact/reanalysis/reanalysis_factory.h>
 #include <fuzzycontact/reanalysis/reanalysis_parameters.h>
 #include <fuzzycontact/reanalysis/reduced_basis.h>
 #include <fuzzycontact/reanalysis/residual_check.h>
@@ -828,8 +829,58 @@ TEST(CombinedApproximations, LiesBetweenTaylorAndHptp)
 
 
 // ----------------------------------------------------------------------------
-// The order rule
+// The factory and the order rule
 // ----------------------------------------------------------------------------
+
+// Each name gives its method, prepared with the settings given; an unknown
+// name is refused with the list of names.
+TEST(ReanalysisFactory, EachNameGivesItsMethod)
+{
+  Study                s("cantilever-zones.prm", 5);
+  const ParameterModel model(*s.component, {"beam.root.E"});
+  ReanalysisSettings   settings;
+  settings.max_order = 2;
+  EXPECT_EQ(reanalysis_method_names(),
+            (std::vector<std::string>{"taylor", "ca", "hptp", "hptp-pi"}));
+  for (const std::string &name : reanalysis_method_names())
+    {
+      const std::unique_ptr<ReanalysisMethod> method =
+        create_reanalysis_method(name, model, s.nominal, settings);
+      ASSERT_TRUE(method);
+      EXPECT_EQ(method->name(), name);
+      EXPECT_EQ(method->has_order(), name != "taylor");
+      const ReanalysisMethod *m = method.get();
+      EXPECT_EQ(dynamic_cast<const FirstOrderTaylor *>(m) != nullptr,
+                name == "taylor");
+      EXPECT_EQ(dynamic_cast<const CombinedApproximations *>(m) != nullptr,
+                name == "ca");
+      EXPECT_EQ(dynamic_cast<const HomotopyPerturbation *>(m) != nullptr,
+                name == "hptp");
+      const auto *pi = dynamic_cast<const ParameterIndependentReanalysis *>(m);
+      EXPECT_EQ(pi != nullptr, name == "hptp-pi");
+      if (pi != nullptr)
+        {
+          EXPECT_EQ(pi->max_order(), 2u);
+          EXPECT_EQ(pi->model().parameter(0).name, "beam.root.E");
+        }
+      // A change of 1 % is reanalysed: first-order Taylor to O(t^2) = 1e-4,
+      // the Rayleigh-Ritz methods to O(t^4) (below 1e-7).
+      const ModalBasis       exact = exact_modes(model, {0.01}, s.nominal, 5);
+      const ReanalysisResult r     = method->reanalyse({0.01}, 1);
+      for (unsigned int j = 0; j < 5; ++j)
+        EXPECT_NEAR(r.eigenvalues[j] / exact.eigenvalues[j],
+                    1,
+                    name == "taylor" ? 1e-4 : 1e-7)
+          << name << ", mode " << j + 1;
+    }
+  const std::string message = error_of([&]() {
+    create_reanalysis_method("hptp2", model, s.nominal, settings);
+  });
+  EXPECT_NE(message.find("There is no reanalysis method called <hptp2>; the "
+                         "methods are: taylor, ca, hptp, hptp-pi."),
+            std::string::npos)
+    << message;
+}
 
 // The order rule on eigenvalues whose frequencies are chosen so that the
 // estimates are known by hand: f = sqrt(lambda) is (10, 20) at order 1,

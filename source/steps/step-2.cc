@@ -30,12 +30,10 @@
 #include <fuzzycontact/modal/modal_solver.h>
 #include <fuzzycontact/modal/mode_comparison.h>
 #include <fuzzycontact/output/output_files.h>
-#include <fuzzycontact/reanalysis/combined_approximations.h>
 #include <fuzzycontact/reanalysis/exact_resolve.h>
-#include <fuzzycontact/reanalysis/first_order_taylor.h>
-#include <fuzzycontact/reanalysis/homotopy_perturbation.h>
 #include <fuzzycontact/reanalysis/order_selection.h>
 #include <fuzzycontact/reanalysis/parameter_independent_reanalysis.h>
+#include <fuzzycontact/reanalysis/reanalysis_factory.h>
 #include <fuzzycontact/reanalysis/reanalysis_parameters.h>
 #include <fuzzycontact/reanalysis/residual_check.h>
 #include <fuzzycontact/scene/scene.h>
@@ -101,9 +99,12 @@ namespace Step2
                         "Global refinements of the component meshes (76 x 2 "
                         "cells of Q2: 0, 1, 2, 3 give 1530, 5490, 20706 and "
                         "80322 DoFs).");
+      std::string known;
+      for (const std::string &name : reanalysis_method_names())
+        known += (known.empty() ? "" : "|") + name;
       prm.declare_entry("methods",
                         "taylor, ca, hptp, hptp-pi",
-                        Patterns::MultipleSelection("taylor|ca|hptp|hptp-pi"),
+                        Patterns::MultipleSelection(known),
                         "Reanalysis methods set beside the exact re-solve.");
       prm.declare_entry("cases",
                         "",
@@ -449,35 +450,13 @@ namespace Step2
     for (const std::string &name : parameters.methods)
       {
         Timer t;
-        if (name == "taylor")
-          methods.push_back(
-            std::make_unique<FirstOrderTaylor>(model,
-                                               nominal,
-                                               settings.cluster_gap));
-        else if (name == "ca")
-          methods.push_back(std::make_unique<CombinedApproximations>(
-            model,
-            nominal,
-            settings.truncation_tolerance));
-        else if (name == "hptp")
-          methods.push_back(std::make_unique<HomotopyPerturbation>(
-            model,
-            nominal,
-            settings.truncation_tolerance,
-            settings.cluster_gap));
-        else
-          {
-            auto p = std::make_unique<ParameterIndependentReanalysis>();
-            p->offline(component,
-                       nominal,
-                       c.parameters,
-                       settings.max_order,
-                       settings.truncation_tolerance,
-                       settings.cluster_gap);
-            pi = p.get();
-            methods.push_back(std::move(p));
-          }
+        methods.push_back(
+          create_reanalysis_method(name, model, nominal, settings));
         offline_time.push_back(t.wall_time());
+        if (const auto *p =
+              dynamic_cast<const ParameterIndependentReanalysis *>(
+                methods.back().get()))
+          pi = p;
       }
     out << " offline [s]:";
     for (unsigned int m = 0; m < methods.size(); ++m)

@@ -16,8 +16,9 @@
 //  - parameter_independent_reanalysis.h: the HPTP whose online cost does not
 //    depend on the mesh.
 //
-// order_selection.h chooses the order a tolerance asks for, and
-// residual_check.h checks reanalysed pairs on the full matrices.
+// reanalysis_factory.h makes a method from its name, order_selection.h
+// chooses the order a tolerance asks for, and residual_check.h checks
+// reanalysed pairs on the full matrices.
 //
 // The methods keep references to the ParameterModel and the nominal
 // ModalBasis they are built with: both must outlive them.
