@@ -22,6 +22,8 @@
 #include <fuzzycontact/reanalysis/reduced_basis.h>
 #include <fuzzycontact/reanalysis/residual_check.h>
 #include <fuzzycontact/scene/scene.h>
+#include <fuzzycontact/scene/scene_quantity.h>
+#include <fuzzycontact/scene/scene_state.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/lapack_full_matrix.h>
@@ -117,30 +119,103 @@ TEST(ReanalysisParameter, ParsesZoneAndComponentNames)
   EXPECT_EQ(root.zone, "root");
   EXPECT_EQ(root.property, MaterialProperty::youngs_modulus);
   EXPECT_EQ(root.zones, std::vector<unsigned int>{0});
+  // Read by SceneQuantity, the one parser of names.
+  EXPECT_EQ(root.quantity.kind, SceneQuantity::Kind::youngs_modulus);
+  EXPECT_EQ(root.quantity.zone, 0);
 
   const ReanalysisParameter all = ReanalysisParameter::parse("beam.rho", beam);
   EXPECT_EQ(all.zone, "");
   EXPECT_EQ(all.property, MaterialProperty::density);
   EXPECT_EQ(all.zones, (std::vector<unsigned int>{0, 1}));
+  EXPECT_EQ(all.quantity.kind, SceneQuantity::Kind::density);
+  EXPECT_EQ(all.quantity.zone, -1);
 
   const auto message = [&](const std::string &name) {
     return error_of([&]() {
       ReanalysisParameter::parse(name, beam);
     });
   };
+  // Every refusal names what the component offers.
+  const std::string offer = "A reanalysis parameter of component beam is "
+                            "beam.E, beam.rho, beam.<zone>.E or "
+                            "beam.<zone>.rho (its zones: root, tip).";
+  for (const std::string name :
+       {"beam.middle.E", "P1.E", "beam.root.nu", "beam..E", "beam"})
+    EXPECT_NE(message(name).find(offer), std::string::npos) << message(name);
   EXPECT_NE(message("beam.middle.E")
               .find(
                 "component beam has no zone called <middle> (its zones: root, "
                 "tip)"),
             std::string::npos);
-  EXPECT_NE(message("P1.E").find("does not belong to component beam"),
+  EXPECT_NE(message("P1.E").find("has no component <P1>"), std::string::npos);
+  EXPECT_NE(message("beam.root.nu").find("<nu> is not a quantity"),
             std::string::npos);
-  EXPECT_NE(message("beam.root.nu").find("<nu> is not a reanalysis property"),
+  EXPECT_NE(message("beam..E").find("expected <component>.E"),
             std::string::npos);
-  EXPECT_NE(message("beam..E").find("a part of the name is empty"),
+  EXPECT_NE(message("beam").find("expected <component>.E"), std::string::npos);
+
+  // In a scene of several components: a quantity of another component, or
+  // one that is not a material property, is refused by name.
+  const Scene overlap = Scene::read(source_dir + "/prm/overlap.prm");
+  EXPECT_EQ(ReanalysisParameter::parse("P2.E", overlap, "P2").zones,
+            std::vector<unsigned int>{0});
+  EXPECT_NE(error_of([&]() {
+              ReanalysisParameter::parse("P2.E", overlap, "P1");
+            })
+              .find("reanalysis parameter <P2.E> does not belong to component "
+                    "P1."),
             std::string::npos);
-  EXPECT_NE(message("beam").find("expected <component>.<zone>.<E|rho>"),
+  EXPECT_NE(error_of([&]() {
+              ReanalysisParameter::parse("P1.tip.force", overlap, "P1");
+            })
+              .find("reanalysis parameter <P1.tip.force>: a reanalysis "
+                    "changes Young's moduli (E) and densities (rho) only."),
             std::string::npos);
+}
+
+// The nominal value of a whole-component parameter over zones of different
+// moduli is the area-weighted mean (SceneQuantity's meaning), computed here
+// by hand; a relative change of it scales every zone, as setting the scene
+// quantity does.
+TEST(ReanalysisParameter, WholeComponentValueIsTheAreaWeightedMean)
+{
+  // root: x in [0, 0.05], E = 100 GPa; tip: x in [0.05, 0.2], E = 210 GPa.
+  std::string text =
+    Input::read_text_file(source_dir + "/prm/cantilever-zones.prm");
+  text = replace(text,
+                 "set x range = 0, 0.1",
+                 "set x range = 0, 0.05\n    set E = 100e9");
+  text = replace(text, "set x range = 0.1, 0.2", "set x range = 0.05, 0.2");
+  const Scene          scene = Scene::read_from_string(text);
+  const Component      component(scene.components[0], scene.plane_model);
+  const ParameterModel model(component,
+                             {"beam.E", "beam.root.E", "beam.tip.rho"});
+
+  const double mean = (100e9 * 0.05 + 210e9 * 0.15) / 0.2; // 182.5 GPa
+  EXPECT_NEAR(model.nominal_value(0), mean, 1e-14 * mean);
+  EXPECT_EQ(model.nominal_value(1), 100e9);
+  EXPECT_EQ(model.nominal_value(2), 7900.);
+  const SceneQuantity whole = SceneQuantity::parse("beam.E", scene);
+  EXPECT_NEAR(model.nominal_value(0), whole.value(scene), 1e-14 * mean);
+
+  const std::vector<double> t =
+    model.relative_changes({1.1 * mean, 100e9, 7900.});
+  EXPECT_NEAR(t[0], 0.1, 1e-14);
+  SceneState state(scene);
+  whole.apply(state, scene, 1.1 * mean);
+  const std::vector<double> moduli = model.zone_materials(t).first;
+  for (unsigned int z = 0; z < 2; ++z)
+    EXPECT_NEAR(moduli[z], state.zone_moduli[0][z], 1e-14 * moduli[z]);
+  EXPECT_NEAR(moduli[0], 110e9, 1e-14 * 110e9);
+  EXPECT_NEAR(moduli[1], 231e9, 1e-14 * 231e9);
+
+  // The nominal state is the component's materials when the model is made.
+  Component changed(scene.components[0], scene.plane_model);
+  changed.set_zone_materials({120e9, 240e9}, {7900., 7900.});
+  const ParameterModel changed_model(changed, {"beam.E"});
+  EXPECT_NEAR(changed_model.nominal_value(0),
+              (120e9 * 0.05 + 240e9 * 0.15) / 0.2,
+              1e-14 * 210e9);
 }
 
 // K(t), M(t) from the derivative matrices agree with an independent

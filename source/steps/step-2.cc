@@ -328,7 +328,8 @@ namespace Step2
           {
             try
               {
-                declared.push_back(ReanalysisParameter::parse(name, component));
+                declared.push_back(
+                  ReanalysisParameter::parse(name, scene, c.component));
               }
             catch (const ExceptionBase &e)
               {
@@ -339,7 +340,7 @@ namespace Step2
           }
         try
           {
-            check_distinct(declared);
+            check_distinct(declared, component);
           }
         catch (const ExceptionBase &e)
           {
