@@ -23,7 +23,7 @@
 #include <fuzzycontact/modal/modal_solver.h>
 #include <fuzzycontact/output/output_files.h>
 #include <fuzzycontact/output/report.h>
-#include <fuzzycontact/reanalysis/modal_reanalysis.h>
+#include <fuzzycontact/reanalysis/reanalysis_method.h>
 #include <fuzzycontact/scene/scene.h>
 #include <fuzzycontact/scene/scene_state.h>
 #include <fuzzycontact/study/contact_scene.h>

@@ -10,12 +10,20 @@
 #include <fuzzycontact/fe/component.h>
 #include <fuzzycontact/modal/modal_solver.h>
 #include <fuzzycontact/modal/mode_comparison.h>
+#include <fuzzycontact/reanalysis/combined_approximations.h>
 #include <fuzzycontact/reanalysis/eigen_derivatives.h>
-#include <fuzzycontact/reanalysis/modal_reanalysis.h>
+#include <fuzzycontact/reanalysis/exact_resolve.h>
+#include <fuzzycontact/reanalysis/first_order_taylor.h>
+#include <fuzzycontact/reanalysis/homotopy_perturbation.h>
+#include <fuzzycontact/reanalysis/order_selection.h>
 #include <fuzzycontact/reanalysis/parameter_independent_reanalysis.h>
+#include <fuzzycontact/reanalysis/reanalysis_factory.h>
 #include <fuzzycontact/reanalysis/reanalysis_parameters.h>
 #include <fuzzycontact/reanalysis/reduced_basis.h>
+#include <fuzzycontact/reanalysis/residual_check.h>
 #include <fuzzycontact/scene/scene.h>
+#include <fuzzycontact/scene/scene_quantity.h>
+#include <fuzzycontact/scene/scene_state.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/lapack_full_matrix.h>
@@ -111,30 +119,103 @@ TEST(ReanalysisParameter, ParsesZoneAndComponentNames)
   EXPECT_EQ(root.zone, "root");
   EXPECT_EQ(root.property, MaterialProperty::youngs_modulus);
   EXPECT_EQ(root.zones, std::vector<unsigned int>{0});
+  // Read by SceneQuantity, the one parser of names.
+  EXPECT_EQ(root.quantity.kind, SceneQuantity::Kind::youngs_modulus);
+  EXPECT_EQ(root.quantity.zone, 0);
 
   const ReanalysisParameter all = ReanalysisParameter::parse("beam.rho", beam);
   EXPECT_EQ(all.zone, "");
   EXPECT_EQ(all.property, MaterialProperty::density);
   EXPECT_EQ(all.zones, (std::vector<unsigned int>{0, 1}));
+  EXPECT_EQ(all.quantity.kind, SceneQuantity::Kind::density);
+  EXPECT_EQ(all.quantity.zone, -1);
 
   const auto message = [&](const std::string &name) {
     return error_of([&]() {
       ReanalysisParameter::parse(name, beam);
     });
   };
+  // Every refusal names what the component offers.
+  const std::string offer = "A reanalysis parameter of component beam is "
+                            "beam.E, beam.rho, beam.<zone>.E or "
+                            "beam.<zone>.rho (its zones: root, tip).";
+  for (const std::string name :
+       {"beam.middle.E", "P1.E", "beam.root.nu", "beam..E", "beam"})
+    EXPECT_NE(message(name).find(offer), std::string::npos) << message(name);
   EXPECT_NE(message("beam.middle.E")
               .find(
                 "component beam has no zone called <middle> (its zones: root, "
                 "tip)"),
             std::string::npos);
-  EXPECT_NE(message("P1.E").find("does not belong to component beam"),
+  EXPECT_NE(message("P1.E").find("has no component <P1>"), std::string::npos);
+  EXPECT_NE(message("beam.root.nu").find("<nu> is not a quantity"),
             std::string::npos);
-  EXPECT_NE(message("beam.root.nu").find("<nu> is not a reanalysis property"),
+  EXPECT_NE(message("beam..E").find("expected <component>.E"),
             std::string::npos);
-  EXPECT_NE(message("beam..E").find("a part of the name is empty"),
+  EXPECT_NE(message("beam").find("expected <component>.E"), std::string::npos);
+
+  // In a scene of several components: a quantity of another component, or
+  // one that is not a material property, is refused by name.
+  const Scene overlap = Scene::read(source_dir + "/prm/overlap.prm");
+  EXPECT_EQ(ReanalysisParameter::parse("P2.E", overlap, "P2").zones,
+            std::vector<unsigned int>{0});
+  EXPECT_NE(error_of([&]() {
+              ReanalysisParameter::parse("P2.E", overlap, "P1");
+            })
+              .find("reanalysis parameter <P2.E> does not belong to component "
+                    "P1."),
             std::string::npos);
-  EXPECT_NE(message("beam").find("expected <component>.<zone>.<E|rho>"),
+  EXPECT_NE(error_of([&]() {
+              ReanalysisParameter::parse("P1.tip.force", overlap, "P1");
+            })
+              .find("reanalysis parameter <P1.tip.force>: a reanalysis "
+                    "changes Young's moduli (E) and densities (rho) only."),
             std::string::npos);
+}
+
+// The nominal value of a whole-component parameter over zones of different
+// moduli is the area-weighted mean (SceneQuantity's meaning), computed here
+// by hand; a relative change of it scales every zone, as setting the scene
+// quantity does.
+TEST(ReanalysisParameter, WholeComponentValueIsTheAreaWeightedMean)
+{
+  // root: x in [0, 0.05], E = 100 GPa; tip: x in [0.05, 0.2], E = 210 GPa.
+  std::string text =
+    Input::read_text_file(source_dir + "/prm/cantilever-zones.prm");
+  text = replace(text,
+                 "set x range = 0, 0.1",
+                 "set x range = 0, 0.05\n    set E = 100e9");
+  text = replace(text, "set x range = 0.1, 0.2", "set x range = 0.05, 0.2");
+  const Scene          scene = Scene::read_from_string(text);
+  const Component      component(scene.components[0], scene.plane_model);
+  const ParameterModel model(component,
+                             {"beam.E", "beam.root.E", "beam.tip.rho"});
+
+  const double mean = (100e9 * 0.05 + 210e9 * 0.15) / 0.2; // 182.5 GPa
+  EXPECT_NEAR(model.nominal_value(0), mean, 1e-14 * mean);
+  EXPECT_EQ(model.nominal_value(1), 100e9);
+  EXPECT_EQ(model.nominal_value(2), 7900.);
+  const SceneQuantity whole = SceneQuantity::parse("beam.E", scene);
+  EXPECT_NEAR(model.nominal_value(0), whole.value(scene), 1e-14 * mean);
+
+  const std::vector<double> t =
+    model.relative_changes({1.1 * mean, 100e9, 7900.});
+  EXPECT_NEAR(t[0], 0.1, 1e-14);
+  SceneState state(scene);
+  whole.apply(state, scene, 1.1 * mean);
+  const std::vector<double> moduli = model.zone_materials(t).first;
+  for (unsigned int z = 0; z < 2; ++z)
+    EXPECT_NEAR(moduli[z], state.zone_moduli[0][z], 1e-14 * moduli[z]);
+  EXPECT_NEAR(moduli[0], 110e9, 1e-14 * 110e9);
+  EXPECT_NEAR(moduli[1], 231e9, 1e-14 * 231e9);
+
+  // The nominal state is the component's materials when the model is made.
+  Component changed(scene.components[0], scene.plane_model);
+  changed.set_zone_materials({120e9, 240e9}, {7900., 7900.});
+  const ParameterModel changed_model(changed, {"beam.E"});
+  EXPECT_NEAR(changed_model.nominal_value(0),
+              (120e9 * 0.05 + 240e9 * 0.15) / 0.2,
+              1e-14 * 210e9);
 }
 
 // K(t), M(t) from the derivative matrices agree with an independent
@@ -819,6 +900,167 @@ TEST(CombinedApproximations, LiesBetweenTaylorAndHptp)
   EXPECT_LT(e_ca, e_taylor / 10);
   EXPECT_LT(e_hptp, e_ca / 10);
   EXPECT_LT(e_ca, 1e-4);
+}
+
+
+// ----------------------------------------------------------------------------
+// The factory and the order rule
+// ----------------------------------------------------------------------------
+
+// Each name gives its method, prepared with the settings given; an unknown
+// name is refused with the list of names.
+TEST(ReanalysisFactory, EachNameGivesItsMethod)
+{
+  Study                s("cantilever-zones.prm", 5);
+  const ParameterModel model(*s.component, {"beam.root.E"});
+  ReanalysisSettings   settings;
+  settings.max_order = 2;
+  EXPECT_EQ(reanalysis_method_names(),
+            (std::vector<std::string>{"taylor", "ca", "hptp", "hptp-pi"}));
+  for (const std::string &name : reanalysis_method_names())
+    {
+      const std::unique_ptr<ReanalysisMethod> method =
+        create_reanalysis_method(name, model, s.nominal, settings);
+      ASSERT_TRUE(method);
+      EXPECT_EQ(method->name(), name);
+      EXPECT_EQ(method->has_order(), name != "taylor");
+      const ReanalysisMethod *m = method.get();
+      EXPECT_EQ(dynamic_cast<const FirstOrderTaylor *>(m) != nullptr,
+                name == "taylor");
+      EXPECT_EQ(dynamic_cast<const CombinedApproximations *>(m) != nullptr,
+                name == "ca");
+      EXPECT_EQ(dynamic_cast<const HomotopyPerturbation *>(m) != nullptr,
+                name == "hptp");
+      const auto *pi = dynamic_cast<const ParameterIndependentReanalysis *>(m);
+      EXPECT_EQ(pi != nullptr, name == "hptp-pi");
+      if (pi != nullptr)
+        {
+          EXPECT_EQ(pi->max_order(), 2u);
+          EXPECT_EQ(pi->model().parameter(0).name, "beam.root.E");
+        }
+      // A change of 1 % is reanalysed: first-order Taylor to O(t^2) = 1e-4,
+      // the Rayleigh-Ritz methods to O(t^4) (below 1e-7).
+      const ModalBasis       exact = exact_modes(model, {0.01}, s.nominal, 5);
+      const ReanalysisResult r     = method->reanalyse({0.01}, 1);
+      for (unsigned int j = 0; j < 5; ++j)
+        EXPECT_NEAR(r.eigenvalues[j] / exact.eigenvalues[j],
+                    1,
+                    name == "taylor" ? 1e-4 : 1e-7)
+          << name << ", mode " << j + 1;
+    }
+  const std::string message = error_of([&]() {
+    create_reanalysis_method("hptp2", model, s.nominal, settings);
+  });
+  EXPECT_NE(message.find("There is no reanalysis method called <hptp2>; the "
+                         "methods are: taylor, ca, hptp, hptp-pi."),
+            std::string::npos)
+    << message;
+}
+
+// The order rule on eigenvalues whose frequencies are chosen so that the
+// estimates are known by hand: f = sqrt(lambda) is (10, 20) at order 1,
+// (9.9, 20) at order 2 and (9.9, 19.998) at order 3, so the change of order
+// 1 is 0.1 / 9.9 = 1.0101e-2 and that of order 2 is 0.002 / 19.998 =
+// 1.0001e-4.
+TEST(OrderSelection, ChoosesTheLowestOrderMeetingTheTolerance)
+{
+  const std::vector<std::vector<double>> f     = {{10, 20},
+                                                  {9.9, 20},
+                                                  {9.9, 19.998}};
+  unsigned int                           calls = 0;
+  const auto eigenvalues                       = [&](const unsigned int n) {
+    ++calls;
+    std::vector<double> lambda;
+    for (const double x : f[n - 1])
+      lambda.push_back(x * x);
+    return lambda;
+  };
+  const double change_1 = 0.1 / 9.9, change_2 = 0.002 / 19.998;
+  EXPECT_NEAR(relative_frequency_change(eigenvalues(1), eigenvalues(2), 2),
+              change_1,
+              1e-14);
+
+  // Tolerance 1e-3: order 2 (order 3 is computed for its change).
+  calls              = 0;
+  OrderSelection sel = order_for_tolerance(3, 1e-3, 2, eigenvalues);
+  EXPECT_EQ(sel.order, 2u);
+  EXPECT_TRUE(sel.tolerance_met);
+  ASSERT_EQ(sel.estimates.size(), 2u);
+  EXPECT_NEAR(sel.estimates[0].estimate, change_1, 1e-14);
+  EXPECT_NEAR(sel.estimates[0].change_to_next_order, change_1, 1e-14);
+  EXPECT_NEAR(sel.estimates[1].estimate, change_2, 1e-14);
+  EXPECT_EQ(calls, 3u);
+
+  // Every order estimated: the same order; the highest has no estimate.
+  sel = order_for_tolerance(3, 1e-3, 2, eigenvalues, {}, true);
+  EXPECT_EQ(sel.order, 2u);
+  ASSERT_EQ(sel.estimates.size(), 3u);
+  EXPECT_TRUE(std::isnan(sel.estimates[2].estimate));
+  EXPECT_TRUE(std::isnan(sel.estimates[2].change_to_next_order));
+
+  // Only the first mode compared: order 2 does not change it at all.
+  sel = order_for_tolerance(3, 1e-5, 1, eigenvalues);
+  EXPECT_EQ(sel.order, 2u);
+  EXPECT_EQ(sel.estimates[1].estimate, 0.);
+
+  // No order meets 1e-5 for both modes: the highest, not met.
+  sel = order_for_tolerance(3, 1e-5, 2, eigenvalues);
+  EXPECT_EQ(sel.order, 3u);
+  EXPECT_FALSE(sel.tolerance_met);
+
+  // With residuals eta = 0.01, 0.1, 0.001: the estimate of order n is also
+  // eta^2 / 2 = 5e-5, 5e-3, 5e-7, so order 2 (5e-3) fails 1e-3 and order 3
+  // (5e-7, no change to compare) meets it. A NaN eta is ignored.
+  const std::vector<double> eta = {0.01, 0.1, 0.001};
+  sel = order_for_tolerance(3, 1e-3, 2, eigenvalues, [&](const unsigned int n) {
+    return eta[n - 1];
+  });
+  EXPECT_EQ(sel.order, 3u);
+  EXPECT_TRUE(sel.tolerance_met);
+  EXPECT_NEAR(sel.estimates[0].estimate, change_1, 1e-14);
+  EXPECT_NEAR(sel.estimates[1].estimate, 5e-3, 1e-15);
+  EXPECT_NEAR(sel.estimates[1].change_to_next_order, change_2, 1e-14);
+  EXPECT_NEAR(sel.estimates[2].estimate, 5e-7, 1e-18);
+  sel = order_for_tolerance(3, 1e-3, 2, eigenvalues, [](const unsigned int) {
+    return std::nan("");
+  });
+  EXPECT_EQ(sel.order, 2u);
+}
+
+// The parameter-independent HPTP chooses its order by the same rule.
+TEST(OrderSelection, IsTheRuleOfTheParameterIndependentReanalysis)
+{
+  Study                          s("cantilever-zones.prm");
+  ParameterIndependentReanalysis pi;
+  pi.offline(*s.component, s.nominal, {"beam.root.E", "beam.tip.rho"}, 3, 1e-6);
+  const std::vector<double> t = {0.2, -0.15};
+  for (const bool check_residuals : {false, true})
+    for (const double tolerance : {1e-4, 1e-6, 1e-8})
+      {
+        const ReanalysedModes chosen =
+          pi.online_to_tolerance(t, tolerance, check_residuals);
+        std::function<double(unsigned int)> eta;
+        if (check_residuals)
+          eta = [&](const unsigned int n) {
+            const auto r = pi.residuals(t, pi.online(t, n));
+            return *std::max_element(r.energy.begin(), r.energy.end());
+          };
+        const OrderSelection rule = order_for_tolerance(
+          3,
+          tolerance,
+          9,
+          [&](const unsigned int n) {
+            return pi.online(t, n).eigenvalues;
+          },
+          eta);
+        EXPECT_EQ(chosen.order, rule.order);
+        EXPECT_EQ(chosen.tolerance_met, rule.tolerance_met);
+        const double estimate = rule.estimates[rule.order - 1].estimate;
+        if (std::isnan(estimate))
+          EXPECT_TRUE(std::isnan(chosen.estimated_error));
+        else
+          EXPECT_DOUBLE_EQ(chosen.estimated_error, estimate);
+      }
 }
 
 

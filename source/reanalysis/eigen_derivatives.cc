@@ -305,9 +305,188 @@ namespace FuzzyContact
   }
 
 
-  // The recursion of the header, for the q directions of @p directions.
-  // The products M0 X_gamma, K_d X_gamma and M_d X_gamma are computed once
-  // per multi-index and kept while they can still be needed.
+  namespace
+  {
+    using IndexPairs = std::vector<std::pair<unsigned int, unsigned int>>;
+
+    // The splittings of the multi-index alpha = I[a] that its right-hand
+    // side needs: inner, the pairs (beta, gamma) with beta + gamma = alpha,
+    // both nonzero; and for each direction d with alpha_d > 0, previous[d] =
+    // alpha - e_d and outer[d], all splittings (beta, gamma) of it.
+    struct Splittings
+    {
+      IndexPairs                inner;
+      std::vector<IndexPairs>   outer;
+      std::vector<unsigned int> previous;
+    };
+
+    // Appends (b, index of alpha - beta) for every beta = I[b], b in
+    // [first, last], with beta <= alpha componentwise (and alpha - beta != 0
+    // unless @p zero_allowed).
+    void
+    add_splittings(const MultiIndexSet             &I,
+                   const std::vector<unsigned int> &alpha,
+                   const unsigned int               first,
+                   const unsigned int               last,
+                   const bool                       zero_allowed,
+                   IndexPairs                      &pairs)
+    {
+      for (unsigned int b = first; b <= last; ++b)
+        {
+          const std::vector<unsigned int> &beta = I[b];
+          bool                             fits = true;
+          std::vector<unsigned int>        gamma(alpha.size());
+          for (unsigned int k = 0; k < alpha.size(); ++k)
+            {
+              fits     = fits && beta[k] <= alpha[k];
+              gamma[k] = fits ? alpha[k] - beta[k] : 0;
+            }
+          if (fits)
+            {
+              const unsigned int g = I.index(gamma);
+              if (zero_allowed || g != 0)
+                pairs.emplace_back(b, g);
+            }
+        }
+    }
+
+    Splittings
+    splittings_of(const MultiIndexSet &I, const unsigned int a)
+    {
+      const std::vector<unsigned int> &alpha = I[a];
+      const unsigned int               q     = alpha.size();
+      Splittings                       s;
+      if (a > 1)
+        add_splittings(I, alpha, 1, a - 1, false, s.inner);
+      s.outer.resize(q);
+      s.previous.assign(q, 0);
+      for (unsigned int d = 0; d < q; ++d)
+        if (alpha[d] > 0)
+          {
+            std::vector<unsigned int> reduced = alpha;
+            --reduced[d];
+            s.previous[d] = I.index(reduced);
+            add_splittings(I, reduced, 0, s.previous[d], true, s.outer[d]);
+          }
+      return s;
+    }
+
+
+    // The products M0 X_alpha, and K_d X_alpha, M_d X_alpha per direction d
+    // (an empty vector stands for a zero product), by multi-index: computed
+    // once per multi-index and kept while they can still be needed.
+    struct Products
+    {
+      Products(const unsigned int n_indices, const unsigned int q)
+          : M0X(n_indices)
+          , KdX(q, std::vector<std::vector<Vector<double>>>(n_indices))
+          , MdX(KdX)
+          , has_K(q, false)
+          , has_M(q, false)
+      {
+      }
+
+      std::vector<std::vector<Vector<double>>>              M0X;
+      std::vector<std::vector<std::vector<Vector<double>>>> KdX, MdX;
+      /** Whether any product with K_d (M_d) is not zero. */
+      std::vector<bool> has_K, has_M;
+    };
+
+
+    // The products of the columns X of multi-index a; M0_phi: the products
+    // of order 0, computed already.
+    void
+    compute_products(const ParameterModel                   &model,
+                     const std::vector<Vector<double>>      &M0_phi,
+                     const std::vector<std::vector<double>> &directions,
+                     const unsigned int                      a,
+                     const std::vector<Vector<double>>      &X,
+                     Products                               &p)
+    {
+      const unsigned int m = X.size();
+      const unsigned int q = directions.size();
+      p.M0X[a].resize(m);
+      for (unsigned int d = 0; d < q; ++d)
+        {
+          p.KdX[d][a].resize(m);
+          p.MdX[d][a].resize(m);
+        }
+      for (unsigned int j = 0; j < m; ++j)
+        {
+          if (a == 0)
+            p.M0X[a][j] = M0_phi[j];
+          else
+            {
+              p.M0X[a][j].reinit(X[j].size());
+              model.nominal_mass().vmult(p.M0X[a][j], X[j]);
+            }
+          for (unsigned int d = 0; d < q; ++d)
+            {
+              Vector<double> product;
+              if (model.stiffness_change(directions[d], X[j], product))
+                {
+                  p.KdX[d][a][j] = std::move(product);
+                  p.has_K[d]     = true;
+                }
+              if (model.mass_change(directions[d], X[j], product))
+                {
+                  p.MdX[d][a][j] = std::move(product);
+                  p.has_M[d]     = true;
+                }
+            }
+        }
+    }
+
+
+    // The right-hand side (r, c) of the bordered system of multi-index
+    // alpha = I[a], column j, from the coefficients of lower order.
+    void
+    right_hand_side(const EigenTaylorCoefficients &result,
+                    const unsigned int             a,
+                    const Splittings              &s,
+                    const Products                &p,
+                    const unsigned int             j,
+                    Vector<double>                &r,
+                    std::vector<double>           &c)
+    {
+      const std::vector<unsigned int> &alpha = result.indices[a];
+      const unsigned int               m     = result.modes.size();
+      const unsigned int               q     = alpha.size();
+      r                                      = 0;
+      std::fill(c.begin(), c.end(), 0.);
+      for (unsigned int d = 0; d < q; ++d)
+        if (alpha[d] > 0 && p.has_K[d] && p.KdX[d][s.previous[d]][j].size() > 0)
+          r.add(-1., p.KdX[d][s.previous[d]][j]);
+      for (const auto &[b, g] : s.inner)
+        for (unsigned int i = 0; i < m; ++i)
+          if (result.eigenvalues[b](i, j) != 0)
+            r.add(result.eigenvalues[b](i, j), p.M0X[g][i]);
+      for (unsigned int d = 0; d < q; ++d)
+        if (alpha[d] > 0 && p.has_M[d])
+          for (const auto &[b, g] : s.outer[d])
+            for (unsigned int i = 0; i < m; ++i)
+              if (result.eigenvalues[b](i, j) != 0 && p.MdX[d][g][i].size() > 0)
+                r.add(result.eigenvalues[b](i, j), p.MdX[d][g][i]);
+
+      if (result.mass_normalised)
+        {
+          double sum = 0;
+          for (const auto &[b, g] : s.inner)
+            sum += result.vectors[b][0] * p.M0X[g][0];
+          for (unsigned int d = 0; d < q; ++d)
+            if (alpha[d] > 0 && p.has_M[d])
+              for (const auto &[b, g] : s.outer[d])
+                if (p.MdX[d][g][0].size() > 0)
+                  sum += result.vectors[b][0] * p.MdX[d][g][0];
+          c[0] = 0.5 * sum;
+        }
+    }
+  } // namespace
+
+
+  // The recursion of the header, for the q directions of @p directions:
+  // order 0 is the cluster itself, and every further multi-index, in order,
+  // one bordered solve per mode of the cluster.
   EigenTaylorCoefficients
   EigenDerivatives::taylor_coefficients(
     const std::vector<std::vector<double>> &directions,
@@ -345,145 +524,37 @@ namespace FuzzyContact
         result.eigenvalues[0](j, j) = nominal.eigenvalues[cluster_[j]];
       }
 
-    // Products, by multi-index: M0 X, and K_d X, M_d X per direction (an
-    // empty vector stands for a zero product).
-    std::vector<std::vector<Vector<double>>>              M0X(I.size());
-    std::vector<std::vector<std::vector<Vector<double>>>> KdX(
-      q,
-      std::vector<std::vector<Vector<double>>>(I.size()));
-    auto              MdX = KdX;
-    std::vector<bool> direction_has_K(q, false), direction_has_M(q, false);
-    const auto        compute_products = [&](const unsigned int a) {
-      M0X[a].resize(m);
-      for (unsigned int d = 0; d < q; ++d)
-        {
-          KdX[d][a].resize(m);
-          MdX[d][a].resize(m);
-        }
-      for (unsigned int j = 0; j < m; ++j)
-        {
-          if (a == 0)
-            M0X[a][j] = M0_phi[j];
-          else
-            {
-              M0X[a][j].reinit(n);
-              model.nominal_mass().vmult(M0X[a][j], result.vectors[a][j]);
-            }
-          for (unsigned int d = 0; d < q; ++d)
-            {
-              Vector<double> product;
-              if (model.stiffness_change(directions[d],
-                                         result.vectors[a][j],
-                                         product))
-                {
-                  KdX[d][a][j]       = std::move(product);
-                  direction_has_K[d] = true;
-                }
-              if (model.mass_change(directions[d],
-                                    result.vectors[a][j],
-                                    product))
-                {
-                  MdX[d][a][j]       = std::move(product);
-                  direction_has_M[d] = true;
-                }
-            }
-        }
-    };
+    Products products(I.size(), q);
     if (order > 0)
-      compute_products(0);
+      compute_products(model,
+                       M0_phi,
+                       directions,
+                       0,
+                       result.vectors[0],
+                       products);
 
     Vector<double>      r(n), x(n);
     std::vector<double> c(m), mu(m);
     for (unsigned int a = 1; a < I.size(); ++a)
       {
-        const std::vector<unsigned int> &alpha = I[a];
         result.vectors[a].resize(m);
         result.eigenvalues[a].reinit(m, m);
-
-        // The splittings alpha = beta + gamma with beta, gamma != 0, and for
-        // each direction d with alpha_d > 0 all splittings of alpha - e_d.
-        std::vector<std::pair<unsigned int, unsigned int>> inner;
-        for (unsigned int b = 1; b < a; ++b)
-          {
-            const std::vector<unsigned int> &beta = I[b];
-            bool                             fits = true;
-            std::vector<unsigned int>        gamma(q);
-            for (unsigned int k = 0; k < q; ++k)
-              {
-                fits     = fits && beta[k] <= alpha[k];
-                gamma[k] = fits ? alpha[k] - beta[k] : 0;
-              }
-            if (fits)
-              {
-                const unsigned int g = I.index(gamma);
-                if (g != 0)
-                  inner.emplace_back(b, g);
-              }
-          }
-        std::vector<std::vector<std::pair<unsigned int, unsigned int>>> outer(
-          q);
-        std::vector<unsigned int> previous(q, 0);
-        for (unsigned int d = 0; d < q; ++d)
-          if (alpha[d] > 0)
-            {
-              std::vector<unsigned int> reduced = alpha;
-              --reduced[d];
-              previous[d] = I.index(reduced);
-              for (unsigned int b = 0; b <= previous[d]; ++b)
-                {
-                  const std::vector<unsigned int> &beta = I[b];
-                  bool                             fits = true;
-                  std::vector<unsigned int>        gamma(q);
-                  for (unsigned int k = 0; k < q; ++k)
-                    {
-                      fits     = fits && beta[k] <= reduced[k];
-                      gamma[k] = fits ? reduced[k] - beta[k] : 0;
-                    }
-                  if (fits)
-                    outer[d].emplace_back(b, I.index(gamma));
-                }
-            }
-
+        const Splittings splittings = splittings_of(I, a);
         for (unsigned int j = 0; j < m; ++j)
           {
-            r = 0;
-            std::fill(c.begin(), c.end(), 0.);
-            for (unsigned int d = 0; d < q; ++d)
-              if (alpha[d] > 0 && direction_has_K[d] &&
-                  KdX[d][previous[d]][j].size() > 0)
-                r.add(-1., KdX[d][previous[d]][j]);
-            for (const auto &[b, g] : inner)
-              for (unsigned int i = 0; i < m; ++i)
-                if (result.eigenvalues[b](i, j) != 0)
-                  r.add(result.eigenvalues[b](i, j), M0X[g][i]);
-            for (unsigned int d = 0; d < q; ++d)
-              if (alpha[d] > 0 && direction_has_M[d])
-                for (const auto &[b, g] : outer[d])
-                  for (unsigned int i = 0; i < m; ++i)
-                    if (result.eigenvalues[b](i, j) != 0 &&
-                        MdX[d][g][i].size() > 0)
-                      r.add(result.eigenvalues[b](i, j), MdX[d][g][i]);
-
-            if (mass_normalise)
-              {
-                double sum = 0;
-                for (const auto &[b, g] : inner)
-                  sum += result.vectors[b][0] * M0X[g][0];
-                for (unsigned int d = 0; d < q; ++d)
-                  if (alpha[d] > 0 && direction_has_M[d])
-                    for (const auto &[b, g] : outer[d])
-                      if (MdX[d][g][0].size() > 0)
-                        sum += result.vectors[b][0] * MdX[d][g][0];
-                c[0] = 0.5 * sum;
-              }
-
+            right_hand_side(result, a, splittings, products, j, r, c);
             solve(j, r, c, x, mu);
             result.vectors[a][j] = x;
             for (unsigned int i = 0; i < m; ++i)
               result.eigenvalues[a](i, j) = mu[i];
           }
         if (I.order(a) < order)
-          compute_products(a);
+          compute_products(model,
+                           M0_phi,
+                           directions,
+                           a,
+                           result.vectors[a],
+                           products);
       }
     return result;
   }

@@ -1,9 +1,11 @@
+#include <fuzzycontact/reanalysis/order_selection.h>
 #include <fuzzycontact/reanalysis/parameter_independent_reanalysis.h>
 
 #include <deal.II/base/exceptions.h>
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace FuzzyContact
 {
@@ -176,61 +178,36 @@ namespace FuzzyContact
   }
 
 
-  namespace
-  {
-    double
-    relative_frequency_change(const ReanalysedModes &a,
-                              const ReanalysedModes &b)
-    {
-      double change = 0;
-      for (unsigned int j = 0; j < a.eigenvalues.size(); ++j)
-        {
-          const double fa = std::sqrt(std::max(a.eigenvalues[j], 0.));
-          const double fb = std::sqrt(std::max(b.eigenvalues[j], 0.));
-          change          = std::max(change, std::abs(fa - fb) / fb);
-        }
-      return change;
-    }
-  } // namespace
-
-
   ReanalysedModes
   ParameterIndependentReanalysis::online_to_tolerance(
     const std::vector<double> &t,
     const double               tolerance,
     const bool                 check_residuals) const
   {
-    const auto residual_estimate = [&](const ReanalysedModes &r) {
-      const ResidualCheck::Residuals res = residuals(t, r);
-      const double                   eta =
-        *std::max_element(res.energy.begin(), res.energy.end());
-      return 0.5 * eta * eta;
+    AssertThrow(model_, ExcMessage("modal reanalysis: call offline() first."));
+    // The rule of order_selection.h, on the orders of this basis: each is
+    // computed once, and the residuals only where the rule asks for them.
+    std::vector<ReanalysedModes> by_order(max_order_ + 1);
+    const auto                   eigenvalues = [&](const unsigned int n) {
+      by_order[n] = online(t, n);
+      return by_order[n].eigenvalues;
     };
-    ReanalysedModes current = online(t, 1);
-    for (unsigned int n = 1; n <= max_order_; ++n)
-      {
-        ReanalysedModes next;
-        double          estimate = -1;
-        if (n < max_order_)
-          {
-            next     = online(t, n + 1);
-            estimate = relative_frequency_change(current, next);
-          }
-        if (check_residuals)
-          estimate = std::max(estimate, residual_estimate(current));
-        if (estimate >= 0)
-          current.estimated_error = estimate;
-        if (estimate >= 0 && estimate <= tolerance)
-          {
-            current.tolerance_met = true;
-            return current;
-          }
-        if (n == max_order_)
-          break;
-        current = std::move(next);
-      }
-    current.tolerance_met = false;
-    return current;
+    std::function<double(unsigned int)> largest_energy_residual;
+    if (check_residuals)
+      largest_energy_residual = [&](const unsigned int n) {
+        const ResidualCheck::Residuals r = residuals(t, by_order[n]);
+        return *std::max_element(r.energy.begin(), r.energy.end());
+      };
+    const OrderSelection selection =
+      order_for_tolerance(max_order_,
+                          tolerance,
+                          nominal_.size(),
+                          eigenvalues,
+                          largest_energy_residual);
+    ReanalysedModes result = std::move(by_order[selection.order]);
+    result.estimated_error = selection.estimates[selection.order - 1].estimate;
+    result.tolerance_met   = selection.tolerance_met;
+    return result;
   }
 
 

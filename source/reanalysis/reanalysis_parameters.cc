@@ -1,5 +1,6 @@
 #include <fuzzycontact/base/input.h>
 #include <fuzzycontact/reanalysis/reanalysis_parameters.h>
+#include <fuzzycontact/scene/scene_state.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
@@ -10,83 +11,95 @@
 
 namespace FuzzyContact
 {
-  ReanalysisParameter
-  ReanalysisParameter::parse(const std::string          &name,
-                             const ComponentDescription &component)
+  Scene
+  component_scene(const ComponentDescription &component)
   {
-    const std::string        trimmed = Utilities::trim(name);
-    const std::string        what    = "reanalysis parameter <" + trimmed + ">";
-    std::vector<std::string> parts;
+    Scene scene;
+    scene.name       = component.name;
+    scene.components = {component};
+    return scene;
+  }
+
+
+  namespace
+  {
+    // What a reanalysis of @p component may vary, for messages.
+    std::string
+    reanalysis_parameters_of(const ComponentDescription &component)
     {
-      std::string::size_type begin = 0;
-      while (true)
-        {
-          const std::string::size_type dot = trimmed.find('.', begin);
-          parts.push_back(trimmed.substr(begin, dot - begin));
-          if (dot == std::string::npos)
-            break;
-          begin = dot + 1;
-        }
+      const std::string &c = component.name;
+      std::string        zones;
+      for (const MaterialZone &zone : component.zones)
+        zones += (zones.empty() ? "" : ", ") + zone.name;
+      return " A reanalysis parameter of component " + c + " is " + c + ".E, " +
+             c + ".rho, " + c + ".<zone>.E or " + c +
+             ".<zone>.rho (its zones: " + zones + ").";
     }
-    AssertThrow(parts.size() == 2 || parts.size() == 3,
-                ExcMessage(what +
-                           ": expected <component>.<zone>.<E|rho> or "
-                           "<component>.<E|rho>, e.g. P1.root.E or P1.rho."));
-    for (const std::string &part : parts)
-      AssertThrow(!part.empty(),
-                  ExcMessage(what + ": a part of the name is empty."));
+  } // namespace
+
+
+  ReanalysisParameter
+  ReanalysisParameter::parse(const std::string &name,
+                             const Scene       &scene,
+                             const std::string &component)
+  {
+    const unsigned int          c           = scene.component_index(component);
+    const ComponentDescription &description = scene.components[c];
+    SceneQuantity               q;
+    try
+      {
+        q = SceneQuantity::parse(name, scene);
+      }
+    catch (const ExceptionBase &e)
+      {
+        AssertThrow(false,
+                    ExcMessage(Input::message_of(e) +
+                               reanalysis_parameters_of(description)));
+      }
+    AssertThrow(q.is_material(),
+                ExcMessage("reanalysis parameter <" + q.name +
+                           ">: a reanalysis changes Young's moduli (E) and "
+                           "densities (rho) only." +
+                           reanalysis_parameters_of(description)));
+    AssertThrow(q.component == c,
+                ExcMessage("reanalysis parameter <" + q.name +
+                           "> does not belong to component " +
+                           description.name + "." +
+                           reanalysis_parameters_of(description)));
 
     ReanalysisParameter p;
-    p.name      = trimmed;
-    p.component = parts.front();
-    AssertThrow(p.component == component.name,
-                ExcMessage(what + " does not belong to component " +
-                           component.name + "."));
-    const std::string &property = parts.back();
-    if (property == "E")
-      p.property = MaterialProperty::youngs_modulus;
-    else if (property == "rho")
-      p.property = MaterialProperty::density;
-    else
-      AssertThrow(false,
-                  ExcMessage(what + ": <" + property +
-                             "> is not a reanalysis property; use E "
-                             "(Young's modulus) or rho (density)."));
-    if (parts.size() == 3)
-      {
-        p.zone     = parts[1];
-        bool found = false;
-        for (unsigned int z = 0; z < component.zones.size(); ++z)
-          if (component.zones[z].name == p.zone)
-            {
-              p.zones.push_back(z);
-              found = true;
-            }
-        if (!found)
-          {
-            std::string known;
-            for (const MaterialZone &zone : component.zones)
-              known += (known.empty() ? "" : ", ") + zone.name;
-            AssertThrow(false,
-                        ExcMessage(what + ": component " + component.name +
-                                   " has no zone called <" + p.zone +
-                                   "> (its zones: " + known + ")."));
-          }
-      }
-    else
-      for (unsigned int z = 0; z < component.zones.size(); ++z)
-        p.zones.push_back(z);
+    p.name      = q.name;
+    p.component = description.name;
+    p.zone      = q.zone >= 0 ? description.zones[q.zone].name : "";
+    p.property  = q.kind == SceneQuantity::Kind::youngs_modulus
+                    ? MaterialProperty::youngs_modulus
+                    : MaterialProperty::density;
+    p.zones     = q.zones(scene);
+    // The same quantity, on the scene of the component alone.
+    p.quantity           = q;
+    p.quantity.component = 0;
     return p;
   }
 
 
-  void
-  check_distinct(const std::vector<ReanalysisParameter> &parameters)
+  ReanalysisParameter
+  ReanalysisParameter::parse(const std::string          &name,
+                             const ComponentDescription &component)
   {
+    return parse(name, component_scene(component), component.name);
+  }
+
+
+  void
+  check_distinct(const std::vector<ReanalysisParameter> &parameters,
+                 const ComponentDescription             &component)
+  {
+    const Scene scene = component_scene(component);
     for (unsigned int k = 0; k < parameters.size(); ++k)
       for (unsigned int l = 0; l < k; ++l)
-        AssertThrow(parameters[k].property != parameters[l].property ||
-                      parameters[k].zones != parameters[l].zones,
+        AssertThrow(!(parameters[k].quantity.overlaps(parameters[l].quantity,
+                                                      scene) &&
+                      parameters[k].zones == parameters[l].zones),
                     ExcMessage("reanalysis parameters <" + parameters[l].name +
                                "> and <" + parameters[k].name +
                                "> change the same property of the same "
@@ -173,17 +186,18 @@ namespace FuzzyContact
     for (const std::string &name : parameter_names)
       parameters_.push_back(ReanalysisParameter::parse(name, description));
 
-    check_distinct(parameters_);
+    check_distinct(parameters_, description);
 
     K0_.reinit(component.sparsity_pattern());
     M0_.reinit(component.sparsity_pattern());
     K0_.copy_from(component.stiffness_matrix());
     M0_.copy_from(component.mass_matrix());
 
-    // Zone areas, for the nominal value of a component-wide parameter.
-    std::vector<double> area(description.zones.size(), 0.);
-    for (const auto &cell : component.triangulation().active_cell_iterators())
-      area[cell->material_id()] += cell->measure();
+    // The nominal state: the component's zone materials as they are now.
+    const Scene scene = component_scene(description);
+    SceneState  nominal_state(scene);
+    nominal_state.zone_moduli[0]    = nominal_moduli_;
+    nominal_state.zone_densities[0] = nominal_densities_;
 
     K_.resize(parameters_.size());
     M_.resize(parameters_.size());
@@ -193,18 +207,11 @@ namespace FuzzyContact
         const bool modulus = p.property == MaterialProperty::youngs_modulus;
         SparseMatrix<double> &target = modulus ? K_[k] : M_[k];
         target.reinit(component.sparsity_pattern());
-        double weighted = 0, total_area = 0;
         for (const unsigned int z : p.zones)
-          {
-            const double value =
-              modulus ? nominal_moduli_[z] : nominal_densities_[z];
-            target.add(value,
-                       modulus ? component.zone_stiffness_matrix(z)
-                               : component.zone_mass_matrix(z));
-            weighted += value * area[z];
-            total_area += area[z];
-          }
-        nominal_values_.push_back(weighted / total_area);
+          target.add(modulus ? nominal_moduli_[z] : nominal_densities_[z],
+                     modulus ? component.zone_stiffness_matrix(z)
+                             : component.zone_mass_matrix(z));
+        nominal_values_.push_back(p.quantity.value(nominal_state, scene));
       }
   }
 

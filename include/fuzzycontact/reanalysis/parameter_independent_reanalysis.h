@@ -27,8 +27,9 @@
 // Order: Ritz values from nested bases decrease monotonically towards the
 // exact eigenvalues, so |f^(n) - f^(n+1)| is a (lower) estimate of the error
 // of order n. online_to_tolerance() and select_order() choose the lowest
-// order whose estimate meets a tolerance; residuals() checks the pairs on
-// the full matrices.
+// order whose estimate meets a tolerance, by the rule of order_selection.h
+// (the one step-2 uses too); residuals() checks the pairs on the full
+// matrices.
 
 #ifndef fuzzycontact_reanalysis_parameter_independent_reanalysis_h
 #define fuzzycontact_reanalysis_parameter_independent_reanalysis_h
@@ -36,9 +37,10 @@
 #include <fuzzycontact/fe/component.h>
 #include <fuzzycontact/modal/modal_solver.h>
 #include <fuzzycontact/reanalysis/eigen_derivatives.h>
-#include <fuzzycontact/reanalysis/modal_reanalysis.h>
+#include <fuzzycontact/reanalysis/reanalysis_method.h>
 #include <fuzzycontact/reanalysis/reanalysis_parameters.h>
 #include <fuzzycontact/reanalysis/reduced_basis.h>
+#include <fuzzycontact/reanalysis/residual_check.h>
 
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/full_matrix.h>

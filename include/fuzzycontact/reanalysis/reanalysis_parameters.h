@@ -2,9 +2,11 @@
 // material zones of one component, and the exact derivative matrices of K
 // and M with respect to them.
 //
-// A parameter is named "<component>.<zone>.<E|rho>" (one zone, e.g.
-// "P1.root.E") or "<component>.<E|rho>" (every zone of the component scaled
-// together, e.g. "P1.rho"). Its value is handled as a relative change
+// A parameter is a scene quantity (scene_quantity.h, the one parser of such
+// names) that is a Young's modulus or a density: "<component>.<zone>.<E|rho>"
+// (one zone, e.g. "P1.root.E") or "<component>.<E|rho>" (every zone of the
+// component scaled together, e.g. "P1.rho", whose value is the area-weighted
+// mean over the zones). Its value is handled as a relative change
 //
 //     t_k = P_k / P_k^0 - 1,
 //
@@ -26,6 +28,7 @@
 
 #include <fuzzycontact/fe/component.h>
 #include <fuzzycontact/scene/scene.h>
+#include <fuzzycontact/scene/scene_quantity.h>
 
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
@@ -45,6 +48,14 @@ namespace FuzzyContact
   };
 
   /**
+   * The scene of @p component alone (its plane model is irrelevant): the
+   * scene on which the parameters of a reanalysis of that component are
+   * named, so that they can be read without the rest of the scene.
+   */
+  Scene
+  component_scene(const ComponentDescription &component);
+
+  /**
    * One reanalysis parameter of a component, as named in a parameter file.
    */
   struct ReanalysisParameter
@@ -58,23 +69,35 @@ namespace FuzzyContact
     MaterialProperty property;
     /** Indices of the zones it acts on (all of them if zone is empty). */
     std::vector<unsigned int> zones;
+    /** The scene quantity it is, on component_scene() of its component. */
+    SceneQuantity quantity;
 
     /**
-     * Reads a parameter name and checks it against the description of the
-     * component it must belong to. Throws a message naming the parameter
-     * if the name is malformed, names another component, a zone that does
-     * not exist, or a property other than E and rho.
+     * Reads a parameter name (through SceneQuantity::parse) in @p scene and
+     * checks that it is the Young's modulus or the density of the component
+     * called @p component or of one of its zones. Throws a message naming
+     * the parameter and what the component offers otherwise.
      */
+    static ReanalysisParameter
+    parse(const std::string &name,
+          const Scene       &scene,
+          const std::string &component);
+
+    /** Same, on component_scene(@p component). */
     static ReanalysisParameter
     parse(const std::string &name, const ComponentDescription &component);
   };
 
   /**
-   * Throws if two of @p parameters change the same property of the same
-   * zones (their derivative matrices would be identical), naming them.
+   * Throws if two of @p parameters, parameters of @p component, change the
+   * same property of the same zones (their derivative matrices would be
+   * identical), naming them. Parameters that share only some zones (P1.E
+   * and P1.root.E) may be declared together: their changes add up in the
+   * shared zones, and their derivative matrices differ.
    */
   void
-  check_distinct(const std::vector<ReanalysisParameter> &parameters);
+  check_distinct(const std::vector<ReanalysisParameter> &parameters,
+                 const ComponentDescription             &component);
 
   /**
    * The zone moduli and densities of @p component after the relative changes
@@ -121,8 +144,10 @@ namespace FuzzyContact
     parameters() const;
 
     /**
-     * Nominal value P_k^0 [Pa or kg/m^3]: the zone's value, or for a
-     * component-wide parameter the area-weighted mean of its zones' values.
+     * Nominal value P_k^0 [Pa or kg/m^3]: the value of the parameter's scene
+     * quantity with the component's zone materials at construction (the
+     * zone's value, or for a component-wide parameter the area-weighted
+     * mean of its zones' values).
      */
     double
     nominal_value(const unsigned int k) const;

@@ -34,8 +34,8 @@
 #include <fuzzycontact/contact/contact_solver.h>
 #include <fuzzycontact/fuzzy/fuzzy_number.h>
 #include <fuzzycontact/modal/modal_solver.h>
-#include <fuzzycontact/reanalysis/modal_reanalysis.h>
 #include <fuzzycontact/reanalysis/parameter_independent_reanalysis.h>
+#include <fuzzycontact/reanalysis/reanalysis_method.h>
 #include <fuzzycontact/reduction/reduced_model.h>
 #include <fuzzycontact/scene/scene_quantity.h>
 #include <fuzzycontact/study/contact_model.h>
