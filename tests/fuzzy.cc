@@ -21,31 +21,6 @@
 using namespace FuzzyContact;
 using namespace FuzzyContact::Testing;
 
-namespace
-{
-
-
-  // The fuzzy parameters of a step file's text, bound to @p scene.
-  FuzzyParameterSet
-  fuzzy_parameters(const Scene &scene, const std::string &text)
-  {
-    FuzzyParameterSet set;
-    Input::parse_in_passes(
-      text,
-      "test.prm",
-      [&](dealii::ParameterHandler &prm) {
-        set.declare_parameters(prm);
-      },
-      [&](dealii::ParameterHandler &prm) {
-        return set.learn_names(prm);
-      },
-      [&](dealii::ParameterHandler &prm) {
-        set.parse_parameters(prm, scene);
-      });
-    return set;
-  }
-} // namespace
-
 
 // ----------------------------------------------------------------------------
 // Fuzzy numbers

@@ -71,23 +71,13 @@ TEST(SceneQuantity, WholeComponentOverZonesThatDiffer)
   EXPECT_FALSE(root.overlaps(SceneQuantity::parse("beam.tip.E", s), s));
   EXPECT_FALSE(root.overlaps(SceneQuantity::parse("beam.root.rho", s), s));
 
-  FuzzyParameterSet set;
   const std::string message = error_of([&] {
-    Input::parse_in_passes(
-      "set fuzzy parameters = beam.E, beam.root.E\n"
-      "subsection Fuzzy parameter beam.E\nset values = 1e11, 2e11, 3e11\nend\n"
-      "subsection Fuzzy parameter beam.root.E\nset values = 1e11, 2e11, "
-      "3e11\nend\n",
-      "test.prm",
-      [&](dealii::ParameterHandler &prm) {
-        set.declare_parameters(prm);
-      },
-      [&](dealii::ParameterHandler &prm) {
-        return set.learn_names(prm);
-      },
-      [&](dealii::ParameterHandler &prm) {
-        set.parse_parameters(prm, s);
-      });
+    fuzzy_parameters(s,
+                     "set fuzzy parameters = beam.E, beam.root.E\n"
+                     "subsection Fuzzy parameter beam.E\n"
+                     "set values = 1e11, 2e11, 3e11\nend\n"
+                     "subsection Fuzzy parameter beam.root.E\n"
+                     "set values = 1e11, 2e11, 3e11\nend\n");
   });
   EXPECT_NE(message.find("fuzzy parameters: <beam.E> and <beam.root.E> set "
                          "the same value of the scene"),
@@ -288,21 +278,11 @@ TEST(TwoPairs, EverySolverKeepsEachPairsFriction)
 // independent solve give about 0.5 F_n of the upper pair).
 TEST(TwoPairs, FuzzyStudyReferenceKeepsEachPairsFriction)
 {
-  const Scene       s = scene("three-beams");
-  FuzzyParameterSet set;
-  Input::parse_in_passes(
+  const Scene             s   = scene("three-beams");
+  const FuzzyParameterSet set = fuzzy_parameters(
+    s,
     "set fuzzy parameters = P1.E\nsubsection Fuzzy parameter P1.E\n"
-    "set values = 0.9, 1, 1.1\nset relative = true\nend\n",
-    "test.prm",
-    [&](dealii::ParameterHandler &prm) {
-      set.declare_parameters(prm);
-    },
-    [&](dealii::ParameterHandler &prm) {
-      return set.learn_names(prm);
-    },
-    [&](dealii::ParameterHandler &prm) {
-      set.parse_parameters(prm, s);
-    });
+    "set values = 0.9, 1, 1.1\nset relative = true\nend\n");
   FuzzyContactModelSettings settings;
   settings.mesh_refinements = 0;
   settings.fl2c.tolerance   = 1e-10;

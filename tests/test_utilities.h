@@ -4,6 +4,8 @@
 #define fuzzycontact_tests_test_utilities_h
 
 #include <fuzzycontact/base/input.h>
+#include <fuzzycontact/fuzzy/fuzzy_parameters.h>
+#include <fuzzycontact/scene/scene.h>
 
 #include <deal.II/base/exceptions.h>
 
@@ -31,6 +33,26 @@ namespace FuzzyContact
       if (pos != std::string::npos)
         text.replace(pos, from.size(), to);
       return text;
+    }
+
+    /** The fuzzy parameters of a step file's text, bound to @p scene. */
+    inline FuzzyParameterSet
+    fuzzy_parameters(const Scene &scene, const std::string &text)
+    {
+      FuzzyParameterSet set;
+      Input::parse_in_passes(
+        text,
+        "test.prm",
+        [&](dealii::ParameterHandler &prm) {
+          set.declare_parameters(prm);
+        },
+        [&](dealii::ParameterHandler &prm) {
+          return set.learn_names(prm);
+        },
+        [&](dealii::ParameterHandler &prm) {
+          set.parse_parameters(prm, scene);
+        });
+      return set;
     }
 
     /** The user-facing message of the exception @p f throws ("" if none). */
