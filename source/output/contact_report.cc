@@ -76,13 +76,20 @@ namespace FuzzyContact
   }
 
 
+  bool
+  ContactCase::uniform_friction() const
+  {
+    return std::all_of(mu.begin(), mu.end(), [&](const double m) {
+      return m == mu[0];
+    });
+  }
+
+
   std::string
   ContactCase::friction_label() const
   {
     std::ostringstream s;
-    if (std::all_of(mu.begin(), mu.end(), [&](const double m) {
-          return m == mu[0];
-        }))
+    if (uniform_friction())
       s << mu[0];
     else
       for (unsigned int p = 0; p < mu.size(); ++p)
@@ -185,9 +192,7 @@ namespace FuzzyContact
       j["scene"]       = c.scene;
       j["plane_model"] = to_string(c.plane_model);
       j["load"]        = c.load;
-      if (std::all_of(c.mu.begin(), c.mu.end(), [&](const double m) {
-            return m == c.mu[0];
-          }))
+      if (c.uniform_friction())
         j["mu"] = c.mu[0];
       else
         for (unsigned int p = 0; p < c.mu.size(); ++p)

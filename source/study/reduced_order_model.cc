@@ -166,6 +166,16 @@ namespace FuzzyContact
                 ExcMessage("ReducedOrderModel: one modal basis and one list "
                            "of observed DoFs per component are expected."));
     const ContactInterface &interface = bodies.interface();
+    const SceneState        scene_values(bodies.scene());
+    for (unsigned int c = 0; c < n_c; ++c)
+      AssertThrow(bodies.component(c).zone_moduli() ==
+                      scene_values.zone_moduli[c] &&
+                    bodies.component(c).zone_densities() ==
+                      scene_values.zone_densities[c],
+                  ExcMessage("ReducedOrderModel: component " +
+                             bodies.component(c).name() +
+                             " is not at the scene's materials; a reduced "
+                             "model is built at the nominal state."));
 
     // Which components need a reanalysis: those with a varying material
     // quantity of a single zone.

@@ -62,6 +62,9 @@ namespace FuzzyContact
     double                 full_order_warm_time = 0;
     std::string            beam_theory;
 
+    /** True if every pair has the same friction coefficient. */
+    bool
+    uniform_friction() const;
     /** "0.3" if every pair has it, else "lower 0, upper 0.5". */
     std::string
     friction_label() const;
