@@ -15,6 +15,7 @@
 // several samples; the exact re-solve is timed from forming K(t), M(t) to
 // the 9 modes (UMFPACK factorisation + ARPACK).
 
+#include <fuzzycontact/base/input.h>
 #include <fuzzycontact/fe/component.h>
 #include <fuzzycontact/modal/modal_solver.h>
 #include <fuzzycontact/modal/mode_comparison.h>
@@ -273,6 +274,56 @@ namespace
 } // namespace
 
 
+namespace
+{
+  void
+  run(const std::string &scene_file, std::vector<unsigned int> refinements)
+  {
+    const Scene scene = Scene::read(scene_file);
+
+    const std::vector<Study> studies = {
+      {"1 parameter (beam.root.E), +-20 %", {"beam.root.E"}, 0.2},
+      {"3 parameters (beam.root.E, beam.tip.E, beam.tip.rho), +-15 %",
+       {"beam.root.E", "beam.tip.E", "beam.tip.rho"},
+       0.15}};
+    // Every method is made by the library's factory with these settings.
+    ReanalysisSettings settings;
+    settings.max_order            = 3;
+    settings.truncation_tolerance = 1e-6;
+    settings.cluster_gap          = 1e-2;
+
+    std::cout << "Modal reanalysis benchmark: " << scene_file
+              << ", 9 modes, 1 thread, truncation tolerance "
+              << settings.truncation_tolerance << "\n";
+    for (const Study &study : studies)
+      {
+        std::cout
+          << "\n## " << study.label << "\n\n"
+          << "| DoFs | method | order | basis | offline [s] | online per "
+             "sample [s] | exact re-solve [s] | speed-up | max rel. "
+             "error | min MAC |\n"
+          << "|---|---|---|---|---|---|---|---|---|---|\n";
+        for (const unsigned int r : refinements)
+          {
+            const Component component(scene.components[0],
+                                      scene.plane_model,
+                                      r);
+            ModalParameters modal;
+            modal.n_modes = 9;
+            const ModalBasis nominal =
+              ModalSolver(modal).solve(component.stiffness_matrix(),
+                                       component.mass_matrix(),
+                                       "beam");
+            const ParameterModel model(component, study.parameters);
+            const MeshBenchmark  bench(model, study, /*n_samples=*/5);
+            benchmark_parameter_independent(bench, nominal, settings);
+            benchmark_sample_dependent(bench, nominal, settings);
+          }
+      }
+  }
+} // namespace
+
+
 int
 main(int argc, char **argv)
 {
@@ -289,43 +340,15 @@ main(int argc, char **argv)
     }
   if (refinements.empty())
     refinements = {1, 2, 3};
-  const Scene scene = Scene::read(scene_file);
-
-  const std::vector<Study> studies = {
-    {"1 parameter (beam.root.E), +-20 %", {"beam.root.E"}, 0.2},
-    {"3 parameters (beam.root.E, beam.tip.E, beam.tip.rho), +-15 %",
-     {"beam.root.E", "beam.tip.E", "beam.tip.rho"},
-     0.15}};
-  // Every method is made by the library's factory with these settings.
-  ReanalysisSettings settings;
-  settings.max_order            = 3;
-  settings.truncation_tolerance = 1e-6;
-  settings.cluster_gap          = 1e-2;
-
-  std::cout << "Modal reanalysis benchmark: " << scene_file
-            << ", 9 modes, 1 thread, truncation tolerance "
-            << settings.truncation_tolerance << "\n";
-  for (const Study &study : studies)
+  try
     {
-      std::cout << "\n## " << study.label << "\n\n"
-                << "| DoFs | method | order | basis | offline [s] | online per "
-                   "sample [s] | exact re-solve [s] | speed-up | max rel. "
-                   "error | min MAC |\n"
-                << "|---|---|---|---|---|---|---|---|---|---|\n";
-      for (const unsigned int r : refinements)
-        {
-          const Component component(scene.components[0], scene.plane_model, r);
-          ModalParameters modal;
-          modal.n_modes = 9;
-          const ModalBasis nominal =
-            ModalSolver(modal).solve(component.stiffness_matrix(),
-                                     component.mass_matrix(),
-                                     "beam");
-          const ParameterModel model(component, study.parameters);
-          const MeshBenchmark  bench(model, study, /*n_samples=*/5);
-          benchmark_parameter_independent(bench, nominal, settings);
-          benchmark_sample_dependent(bench, nominal, settings);
-        }
+      run(scene_file, refinements);
+    }
+  catch (const ExceptionBase &e)
+    {
+      std::cerr << "reanalysis_benchmark: error: " << Input::message_of(e)
+                << std::endl;
+      return 1;
     }
   return 0;
 }
