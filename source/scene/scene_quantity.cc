@@ -39,6 +39,42 @@ namespace FuzzyContact
                                                          : state.zone_densities;
     }
 
+    // The scene's own values of a zone property of component @p c.
+    std::vector<double>
+    scene_zone_values(const Scene              &scene,
+                      const unsigned int        c,
+                      const SceneQuantity::Kind kind)
+    {
+      std::vector<double> values;
+      for (const MaterialZone &z : scene.components[c].zones)
+        values.push_back(kind == SceneQuantity::Kind::youngs_modulus
+                           ? z.youngs_modulus
+                           : z.density);
+      return values;
+    }
+
+    // The value of zone @p zone of @p values, or for every zone (-1) their
+    // common value, else their area-weighted mean over component @p c.
+    double
+    zone_value(const std::vector<double>  &values,
+               const int                   zone,
+               const ComponentDescription &c)
+    {
+      if (zone >= 0)
+        return values[zone];
+      if (std::all_of(values.begin(), values.end(), [&](const double v) {
+            return v == values[0];
+          }))
+        return values[0];
+      double weighted = 0, area = 0;
+      for (unsigned int z = 0; z < values.size(); ++z)
+        {
+          weighted += values[z] * c.zone_area(z);
+          area += c.zone_area(z);
+        }
+      return weighted / area;
+    }
+
     // Distance between the facing sides of two axis-aligned rectangles.
     double
     face_distance(const ContactPairDescription &pair,
@@ -205,7 +241,26 @@ namespace FuzzyContact
   double
   SceneQuantity::value(const Scene &scene) const
   {
-    return value(SceneState(scene), scene);
+    switch (kind)
+      {
+        case Kind::youngs_modulus:
+        case Kind::density:
+          return zone_value(scene_zone_values(scene, component, kind),
+                            zone,
+                            scene.components[component]);
+        case Kind::load:
+          return scene.components[component].loads[load].total_force;
+        case Kind::friction:
+          return scene.contact_pairs[contact_pair].friction_coefficient;
+        case Kind::gap:
+          {
+            const ContactPairDescription &pair =
+              scene.contact_pairs[contact_pair];
+            return pair.has_initial_gap ? pair.initial_gap
+                                        : face_distance(pair, scene, name);
+          }
+      }
+    return 0;
   }
 
 
@@ -216,38 +271,15 @@ namespace FuzzyContact
       {
         case Kind::youngs_modulus:
         case Kind::density:
-          {
-            const std::vector<double> &values =
-              zone_values(state, kind)[component];
-            if (zone >= 0)
-              return values[zone];
-            // Every zone: the common value, or the area-weighted mean.
-            if (std::all_of(values.begin(), values.end(), [&](const double v) {
-                  return v == values[0];
-                }))
-              return values[0];
-            const ComponentDescription &c        = scene.components[component];
-            double                      weighted = 0, area = 0;
-            for (unsigned int z = 0; z < values.size(); ++z)
-              {
-                weighted += values[z] * c.zone_area(z);
-                area += c.zone_area(z);
-              }
-            return weighted / area;
-          }
+          return zone_value(zone_values(state, kind)[component],
+                            zone,
+                            scene.components[component]);
         case Kind::load:
           return state.load_forces[component][load];
         case Kind::friction:
           return state.friction_coefficients[contact_pair];
         case Kind::gap:
-          {
-            const ContactPairDescription &pair =
-              scene.contact_pairs[contact_pair];
-            const double nominal = pair.has_initial_gap
-                                     ? pair.initial_gap
-                                     : face_distance(pair, scene, name);
-            return nominal + state.gap_offsets[contact_pair];
-          }
+          return value(scene) + state.gap_offsets[contact_pair];
       }
     return 0;
   }
@@ -266,12 +298,12 @@ namespace FuzzyContact
             Input::positive(v, name);
             // From the scene's values: every zone takes v, or (zones that
             // differ) its own value times v / their nominal mean.
-            const SceneState           nominal(scene);
-            const std::vector<double> &from =
-              zone_values(nominal, kind)[component];
-            std::vector<double> &to   = zone_values(state, kind)[component];
-            const double         mean = value(nominal, scene);
-            const bool           uniform =
+            const std::vector<double> from =
+              scene_zone_values(scene, component, kind);
+            std::vector<double> &to = zone_values(state, kind)[component];
+            const double         mean =
+              zone_value(from, -1, scene.components[component]);
+            const bool uniform =
               std::all_of(from.begin(), from.end(), [&](const double x) {
                 return x == from[0];
               });

@@ -62,10 +62,13 @@ namespace FuzzyContact
     std::unique_ptr<FullOrderContact>
     make_solver() const;
 
-    ContactScene                     &bodies;
-    ObservedDofs                      observed;
-    ActiveSetParameters               parameters;
-    SceneState                        state;
+    ContactScene       &bodies;
+    ObservedDofs        observed;
+    ActiveSetParameters parameters;
+    SceneState          state;
+    // The state's gaps and friction coefficients, per slave node.
+    Vector<double>                    initial_gaps;
+    std::vector<double>               friction_coefficients;
     bool                              reuse        = false;
     unsigned int                      n_load_steps = 1;
     std::unique_ptr<FullOrderContact> current;
