@@ -1,0 +1,104 @@
+// A sparse Cholesky factorisation of a symmetric positive definite matrix
+// (CHOLMOD, supernodal), with chosen DoFs ordered last.
+//
+// With a fill-reducing ordering constrained (CAMD) to put the DoFs B last,
+//
+//   P A P^T = L L^T,  L = [L_II 0; L_BI L_BB],
+//
+// the trailing block gives A^{-1} restricted to B without a single solve:
+// L^{-1} is lower triangular, so the trailing block of A^{-1} = P^T L^{-T}
+// L^{-1} P is (L_BB L_BB^T)^{-1}, the inverse of the Schur complement
+// S = A_BB - A_BI A_II^{-1} A_IB = L_BB L_BB^T. A component's contact
+// flexibility, its load responses at the contact and the displacements it
+// reports all live on such a set B (reduction/reduced_model.h).
+//
+// Solves are plain forward and backward substitutions (no iterative
+// refinement): the backward error of a Cholesky factorisation is at the
+// round-off level, so refinement would not improve the forward error, which
+// the condition of A limits.
+
+#ifndef fuzzycontact_base_sparse_cholesky_h
+#define fuzzycontact_base_sparse_cholesky_h
+
+#include <deal.II/base/types.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace FuzzyContact
+{
+  using namespace dealii;
+
+  class SparseCholesky
+  {
+  public:
+    SparseCholesky();
+    SparseCholesky(const SparseCholesky &) = delete;
+    SparseCholesky &
+    operator=(const SparseCholesky &) = delete;
+    ~SparseCholesky();
+
+    /**
+     * Factorises the symmetric positive definite matrix @p A (only its
+     * lower triangle is read), with the DoFs @p last ordered last (in an
+     * order of CHOLMOD's choice, see trailing_dofs()). @p what names the
+     * matrix in messages ("<what> is not positive definite"): a matrix that
+     * is not positive definite (a
+     * component whose rigid-body motions are not all suppressed) is refused
+     * with the pivot that failed.
+     */
+    void
+    factorize(const SparseMatrix<double>                 &A,
+              const std::vector<types::global_dof_index> &last = {},
+              const std::string                          &what = "The matrix");
+
+    /** Size of the factorised matrix (0 before factorize()). */
+    types::global_dof_index
+    n() const;
+
+    /** Overwrites @p b by A^{-1} b. */
+    void
+    solve(Vector<double> &b) const;
+    /** dst = A^{-1} src (the interface of an inverse operator). */
+    void
+    vmult(Vector<double> &dst, const Vector<double> &src) const;
+
+    /**
+     * The DoFs given as @p last to factorize(), in the order in which they
+     * are the trailing rows of L.
+     */
+    const std::vector<types::global_dof_index> &
+    trailing_dofs() const;
+
+    /**
+     * The trailing block L_BB of L (lower triangular), rows and columns in
+     * the order of trailing_dofs().
+     */
+    FullMatrix<double>
+    trailing_factor() const;
+
+    /**
+     * (A^{-1})_BB = (L_BB L_BB^T)^{-1}, rows and columns in the order of
+     * trailing_dofs().
+     */
+    FullMatrix<double>
+    trailing_inverse() const;
+
+    /** Entries of L, and the bytes CHOLMOD holds for the factorisation. */
+    double
+    n_factor_entries() const;
+    std::size_t
+    memory_consumption() const;
+
+  private:
+    struct Data;
+    std::unique_ptr<Data>                data;
+    std::vector<types::global_dof_index> trailing;
+  };
+} // namespace FuzzyContact
+
+#endif

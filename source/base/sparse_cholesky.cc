@@ -1,0 +1,310 @@
+#include <fuzzycontact/base/sparse_cholesky.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/lac/lapack_templates.h>
+
+#include <algorithm>
+#include <cmath>
+#include <suitesparse/cholmod.h>
+
+namespace FuzzyContact
+{
+  using Index = SuiteSparse_long;
+
+  struct SparseCholesky::Data
+  {
+    cholmod_common  common;
+    cholmod_factor *factor = nullptr;
+    // Workspace of cholmod_l_solve2, kept between solves.
+    mutable cholmod_dense *x = nullptr, *y = nullptr, *e = nullptr;
+
+    Data()
+    {
+      cholmod_l_start(&common);
+      // Errors are reported through the return values and Common->status,
+      // in our messages; CHOLMOD itself stays quiet.
+      common.print = 0;
+    }
+
+    ~Data()
+    {
+      cholmod_l_free_dense(&x, &common);
+      cholmod_l_free_dense(&y, &common);
+      cholmod_l_free_dense(&e, &common);
+      cholmod_l_free_factor(&factor, &common);
+      cholmod_l_finish(&common);
+    }
+  };
+
+
+  SparseCholesky::SparseCholesky()
+      : data(std::make_unique<Data>())
+  {
+  }
+
+
+  SparseCholesky::~SparseCholesky() = default;
+
+
+  namespace
+  {
+    // The lower triangle of the symmetric @p A in CHOLMOD's compressed
+    // columns: column j of it is the part of row j of A (compressed rows) on
+    // and below the diagonal, sorted.
+    struct LowerTriangle
+    {
+      std::vector<Index>  column_starts, rows;
+      std::vector<double> values;
+      cholmod_sparse      matrix;
+
+      explicit LowerTriangle(const SparseMatrix<double> &A)
+      {
+        const Index n = A.m();
+        column_starts.assign(1, 0);
+        std::vector<std::pair<Index, double>> column;
+        for (Index j = 0; j < n; ++j)
+          {
+            column.clear();
+            for (auto it = A.begin(j); it != A.end(j); ++it)
+              if (static_cast<Index>(it->column()) >= j)
+                column.emplace_back(it->column(), it->value());
+            std::sort(column.begin(), column.end());
+            for (const auto &[i, value] : column)
+              {
+                rows.push_back(i);
+                values.push_back(value);
+              }
+            column_starts.push_back(rows.size());
+          }
+        matrix        = cholmod_sparse();
+        matrix.nrow   = n;
+        matrix.ncol   = n;
+        matrix.nzmax  = rows.size();
+        matrix.p      = column_starts.data();
+        matrix.i      = rows.data();
+        matrix.stype  = -1;
+        matrix.itype  = CHOLMOD_LONG;
+        matrix.xtype  = CHOLMOD_REAL;
+        matrix.dtype  = CHOLMOD_DOUBLE;
+        matrix.sorted = 1;
+        matrix.packed = 1;
+        matrix.x      = values.data();
+      }
+    };
+  } // namespace
+
+
+  void
+  SparseCholesky::factorize(const SparseMatrix<double>                 &A,
+                            const std::vector<types::global_dof_index> &last,
+                            const std::string                          &what)
+  {
+    AssertThrow(A.m() == A.n() && A.m() > 0,
+                ExcMessage(what + " to factorise must be square and not "
+                                  "empty."));
+    data = std::make_unique<Data>();
+    trailing.clear();
+    cholmod_common &common = data->common;
+    const Index     n      = A.m();
+    LowerTriangle   lower(A);
+
+    // The ordering: CAMD with the DoFs of @p last in a second constraint
+    // set (ordered after the first), used as given: no postordering, which
+    // could move them.
+    std::vector<Index> member(n, 0), permutation(n);
+    for (const types::global_dof_index dof : last)
+      {
+        AssertThrow(dof < A.m(),
+                    ExcMessage(what +
+                               ": a DoF to order last is out of range."));
+        member[dof] = 1;
+      }
+    const Index m = std::count(member.begin(), member.end(), 1);
+    AssertThrow(cholmod_l_camd(&lower.matrix,
+                               nullptr,
+                               0,
+                               member.data(),
+                               permutation.data(),
+                               &common) == 1,
+                ExcMessage(what +
+                           " could not be ordered: CHOLMOD's CAMD failed "
+                           "with status " +
+                           std::to_string(common.status) + "."));
+    common.nmethods           = 1;
+    common.method[0].ordering = CHOLMOD_GIVEN;
+    common.postorder          = 0;
+    common.supernodal         = CHOLMOD_SUPERNODAL;
+    data->factor              = cholmod_l_analyze_p(&lower.matrix,
+                                       permutation.data(),
+                                       nullptr,
+                                       0,
+                                       &common);
+    AssertThrow(data->factor != nullptr,
+                ExcMessage(what +
+                           " could not be analysed: CHOLMOD failed with "
+                           "status " +
+                           std::to_string(common.status) +
+                           (common.status == CHOLMOD_OUT_OF_MEMORY
+                              ? " (out of memory)."
+                              : ".")));
+    cholmod_l_factorize(&lower.matrix, data->factor, &common);
+    const Index *perm = static_cast<const Index *>(data->factor->Perm);
+    if (common.status == CHOLMOD_NOT_POSDEF)
+      {
+        const Index pivot = data->factor->minor;
+        AssertThrow(false,
+                    ExcMessage(
+                      what + " is not positive definite (pivot " +
+                      std::to_string(pivot) + " of " + std::to_string(n) +
+                      ", DoF " + std::to_string(pivot < n ? perm[pivot] : -1) +
+                      "). Either a rigid-body motion is not suppressed by the "
+                      "supports, or a material value is not positive."));
+      }
+    AssertThrow(common.status == CHOLMOD_OK,
+                ExcMessage(what +
+                           " could not be factorised: CHOLMOD failed "
+                           "with status " +
+                           std::to_string(common.status) +
+                           (common.status == CHOLMOD_OUT_OF_MEMORY
+                              ? " (out of memory)."
+                              : ".")));
+    Assert(data->factor->is_super && data->factor->is_ll,
+           ExcMessage("A supernodal LL^T factor was asked for."));
+
+    for (Index k = n - m; k < n; ++k)
+      {
+        Assert(member[perm[k]] == 1,
+               ExcMessage("CHOLMOD did not keep the given ordering."));
+        trailing.push_back(perm[k]);
+      }
+  }
+
+
+  types::global_dof_index
+  SparseCholesky::n() const
+  {
+    return data->factor == nullptr ? 0 : data->factor->n;
+  }
+
+
+  void
+  SparseCholesky::solve(Vector<double> &b) const
+  {
+    Assert(data->factor != nullptr, ExcMessage("factorize() first."));
+    AssertDimension(b.size(), n());
+    cholmod_dense rhs = cholmod_dense();
+    rhs.nrow          = b.size();
+    rhs.ncol          = 1;
+    rhs.nzmax         = b.size();
+    rhs.d             = b.size();
+    rhs.x             = b.data();
+    rhs.xtype         = CHOLMOD_REAL;
+    rhs.dtype         = CHOLMOD_DOUBLE;
+    const int ok      = cholmod_l_solve2(CHOLMOD_A,
+                                    data->factor,
+                                    &rhs,
+                                    nullptr,
+                                    &data->x,
+                                    nullptr,
+                                    &data->y,
+                                    &data->e,
+                                    &data->common);
+    AssertThrow(ok == 1,
+                ExcMessage("CHOLMOD's solve failed with status " +
+                           std::to_string(data->common.status) + "."));
+    const double *x = static_cast<const double *>(data->x->x);
+    std::copy(x, x + b.size(), b.begin());
+  }
+
+
+  void
+  SparseCholesky::vmult(Vector<double> &dst, const Vector<double> &src) const
+  {
+    dst = src;
+    solve(dst);
+  }
+
+
+  const std::vector<types::global_dof_index> &
+  SparseCholesky::trailing_dofs() const
+  {
+    return trailing;
+  }
+
+
+  FullMatrix<double>
+  SparseCholesky::trailing_factor() const
+  {
+    Assert(data->factor != nullptr, ExcMessage("factorize() first."));
+    const cholmod_factor &L     = *data->factor;
+    const Index           n     = L.n;
+    const Index           m     = trailing.size();
+    const Index           first = n - m;
+    const Index          *super = static_cast<const Index *>(L.super);
+    const Index          *pi    = static_cast<const Index *>(L.pi);
+    const Index          *px    = static_cast<const Index *>(L.px);
+    const Index          *rows  = static_cast<const Index *>(L.s);
+    const double         *x     = static_cast<const double *>(L.x);
+
+    // Each supernode holds columns super[s] .. super[s+1]-1 as a dense
+    // column-major block whose rows are rows[pi[s] .. pi[s+1]).
+    FullMatrix<double> L_BB(m, m);
+    for (Index s = 0; s < static_cast<Index>(L.nsuper); ++s)
+      {
+        const Index k1 = super[s], k2 = super[s + 1];
+        if (k2 <= first)
+          continue;
+        const Index n_rows = pi[s + 1] - pi[s];
+        for (Index j = std::max(k1, first); j < k2; ++j)
+          for (Index r = j - k1; r < n_rows; ++r)
+            {
+              const Index i = rows[pi[s] + r];
+              if (i >= first)
+                L_BB(i - first, j - first) = x[px[s] + (j - k1) * n_rows + r];
+            }
+      }
+    return L_BB;
+  }
+
+
+  FullMatrix<double>
+  SparseCholesky::trailing_inverse() const
+  {
+    // LAPACK's dpotri on L_BB. FullMatrix is row-major: its data is L_BB^T
+    // in column-major order, an upper triangle.
+    FullMatrix<double>    G = trailing_factor();
+    const types::blas_int m = G.m();
+    if (m == 0)
+      return G;
+    types::blas_int info = 0;
+    potri("U", &m, &G(0, 0), &m, &info);
+    AssertThrow(info == 0,
+                ExcMessage("LAPACK's dpotri failed on the Schur complement "
+                           "(info " +
+                           std::to_string(info) + ")."));
+    // dpotri wrote the upper triangle in column-major order, the lower one
+    // of the row-major G.
+    for (types::blas_int i = 0; i < m; ++i)
+      for (types::blas_int j = i + 1; j < m; ++j)
+        G(i, j) = G(j, i);
+    return G;
+  }
+
+
+  double
+  SparseCholesky::n_factor_entries() const
+  {
+    return data->factor == nullptr ? 0. : data->common.lnz;
+  }
+
+
+  std::size_t
+  SparseCholesky::memory_consumption() const
+  {
+    if (data->factor == nullptr)
+      return 0;
+    const cholmod_factor &L = *data->factor;
+    return L.xsize * sizeof(double) +
+           (L.ssize + 2 * L.n + 3 * L.nsuper) * sizeof(Index);
+  }
+} // namespace FuzzyContact
