@@ -133,11 +133,12 @@ namespace
       std::vector<ReducedComponentMatrices> matrices;
       for (unsigned int c = 0; c < setup.components.size(); ++c)
         {
-          components.push_back(
-            std::make_unique<ReducedComponent>(*setup.components[c],
-                                               bases[c],
-                                               setup.interface->contact_dofs(c),
-                                               corrected));
+          components.push_back(std::make_unique<ReducedComponent>(
+            *setup.components[c],
+            bases[c],
+            setup.bodies.stiffness_factorisation(c),
+            setup.interface->contact_dofs(c),
+            corrected));
           matrices.push_back(
             components.back()->matrices(setup.interface->gap_operator(c),
                                         setup.outputs.dofs()[c]));
@@ -1074,7 +1075,7 @@ TEST(ReducedModel, StaticCorrectionMakesTheFlexibilityExact)
       const FullMatrix<double> W  = full.flexibility();
       const Vector<double>     gl = full.load_gaps();
       const Reduced            corrected(setup, true);
-      FullMatrix<double>       difference = corrected.model->problem().W;
+      FullMatrix<double>       difference = corrected.model->flexibility();
       difference.add(-1., W);
       EXPECT_LE(difference.frobenius_norm(), 1e-8 * W.frobenius_norm()) << name;
       Vector<double> dg = corrected.model->problem().g_load;
@@ -1084,8 +1085,8 @@ TEST(ReducedModel, StaticCorrectionMakesTheFlexibilityExact)
       // Modes only: W is the modal sum sum_j (phi_j^T c)(phi_j^T c)^T /
       // lambda_j of each component, of rank at most 18, and smaller than the
       // full W on the diagonal (the residual flexibility is missing).
-      const Reduced modes(setup, false);
-      const auto   &Wm = modes.model->problem().W;
+      const Reduced            modes(setup, false);
+      const FullMatrix<double> Wm = modes.model->flexibility();
       for (unsigned int i = 0; i < Wm.m(); ++i)
         EXPECT_LT(Wm(i, i), W(i, i) * (1 + 1e-12)) << name;
       const unsigned int row       = normal_row(0);
@@ -1122,7 +1123,7 @@ TEST(ReducedModel, RebuildsFromSmallMatricesForNewModuli)
       ReducedComponentMatrices m =
         nominal.components[c]->matrices(setup.interface->gap_operator(c),
                                         observed[c]);
-      m.stiffness = nominal.components[c]->zone_stiffness(0);
+      m.stiffness = nominal.components[c]->zone_stiffnesses()[0];
       m.stiffness *= moduli[c];
       matrices.push_back(std::move(m));
     }

@@ -109,6 +109,15 @@ namespace FuzzyContact
   }
 
 
+  void
+  SparseDirectSolver::vmult(Vector<double>       &dst,
+                            const Vector<double> &src) const
+  {
+    dst = src;
+    solve(dst);
+  }
+
+
   types::global_dof_index
   SparseDirectSolver::n() const
   {

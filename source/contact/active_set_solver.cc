@@ -358,8 +358,7 @@ namespace FuzzyContact
       {
         if (cache[k] == 0)
           {
-            W.prepare({row});
-            const double d = W(row, row);
+            const double d = W.diagonal(row);
             AssertThrow(d > 0 && std::isfinite(d),
                         ExcMessage(what +
                                    ": the contact flexibility of slave "
@@ -691,6 +690,8 @@ namespace FuzzyContact
                               const LoadStep       &step,
                               const std::string    &what) const
   {
+    if (problem.flexibility != nullptr)
+      return solve(*problem.flexibility, step, problem.mu, what);
     DenseFlexibility W(problem.W);
     return solve(W, step, problem.mu, what);
   }

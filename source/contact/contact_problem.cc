@@ -46,6 +46,22 @@ namespace FuzzyContact
     return W(i, j);
   }
 
+  const double *
+  DenseFlexibility::column(const unsigned int j)
+  {
+    AssertIndexRange(j, W.m());
+    gathered.resize(W.m());
+    for (unsigned int i = 0; i < W.m(); ++i)
+      gathered[i] = W(i, j);
+    return gathered.data();
+  }
+
+  double
+  DenseFlexibility::diagonal(const unsigned int i)
+  {
+    return W(i, i);
+  }
+
 
   unsigned int
   ContactProblem::n_nodes() const
@@ -88,16 +104,17 @@ namespace FuzzyContact
   void
   ContactProblem::check() const
   {
-    const unsigned int m = n_rows();
-    AssertThrow(W.m() == m && W.n() == m && g_initial.size() == m &&
-                  g_load.size() == m,
+    const unsigned int m     = n_rows();
+    const bool         dense = flexibility == nullptr;
+    AssertThrow((dense ? W.m() == m && W.n() == m : flexibility->size() == m) &&
+                  g_initial.size() == m && g_load.size() == m,
                 ExcMessage("ContactProblem: W, g_initial and g_load must all "
                            "have 2 rows per node."));
     for (unsigned int i = 0; i < m; ++i)
       {
         AssertThrow(std::isfinite(g_initial[i]) && std::isfinite(g_load[i]),
                     ExcMessage("ContactProblem: a gap is not finite."));
-        for (unsigned int j = 0; j < m; ++j)
+        for (unsigned int j = 0; j < m && dense; ++j)
           AssertThrow(std::isfinite(W(i, j)),
                       ExcMessage("ContactProblem: W has a non-finite entry."));
       }

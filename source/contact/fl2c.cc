@@ -174,15 +174,18 @@ namespace FuzzyContact
 
     // 1. Reduced solve: the gaps g = g_free + W p of the current forces.
     void
-    compute_gaps(ContactState             &state,
-                 const FullMatrix<double> &W,
-                 const Vector<double>     &g_free)
+    compute_gaps(ContactState         &state,
+                 FlexibilityOperator  &W,
+                 const Vector<double> &g_free)
     {
       state.g = g_free;
       for (unsigned int j = 0; j < state.p.size(); ++j)
         if (state.p[j] != 0)
-          for (unsigned int i = 0; i < state.p.size(); ++i)
-            state.g[i] += W(i, j) * state.p[j];
+          {
+            const double *w = W.column(j);
+            for (unsigned int i = 0; i < state.p.size(); ++i)
+              state.g[i] += w[i] * state.p[j];
+          }
     }
 
     // Whether the gaps satisfy the contact conditions within @p gap_tol.
@@ -219,14 +222,14 @@ namespace FuzzyContact
     std::pair<std::vector<double>, double>
     residuals(const ContactState        &state,
               const LoadStep            &step,
-              const FullMatrix<double>  &W,
+              FlexibilityOperator       &W,
               const std::vector<double> &mu)
     {
       const auto c_n = [&](unsigned int k) {
-        return 1. / W(normal_row(k), normal_row(k));
+        return 1. / W.diagonal(normal_row(k));
       };
       const auto c_t = [&](unsigned int k) {
-        return 1. / W(tangential_row(k), tangential_row(k));
+        return 1. / W.diagonal(tangential_row(k));
       };
       return {complementarity_residuals(state.p,
                                         state.g,
@@ -244,7 +247,7 @@ namespace FuzzyContact
     double
     sweep(ContactState              &state,
           const LoadStep            &step,
-          const FullMatrix<double>  &W,
+          FlexibilityOperator       &W,
           const std::vector<double> &mu,
           const Regulators          &regulators)
     {
@@ -263,21 +266,23 @@ namespace FuzzyContact
         if (change == 0)
           return;
         state.p[row] += change;
+        const double *w = W.column(row);
         for (unsigned int i = 0; i < 2 * n; ++i)
-          state.g[i] += W(i, row) * change;
+          state.g[i] += w[i] * change;
         force_change = std::max(force_change, std::abs(change));
       };
       for (const unsigned int k : order)
         {
           const unsigned int rn = normal_row(k), rt = tangential_row(k);
-          const double dpn = regulators.normal_change(state.g[rn], W(rn, rn));
-          const double pn  = std::max(0., state.p[rn] + dpn);
+          const double       dpn =
+            regulators.normal_change(state.g[rn], W.diagonal(rn));
+          const double pn = std::max(0., state.p[rn] + dpn);
           apply(rn, pn - state.p[rn]);
           if (mu[k] == 0)
             continue;
           // Tangential force capped by Coulomb's bound.
           const double dgt = state.g[rt] - step.g_previous[rt];
-          const double dpt = regulators.tangential_change(dgt, W(rt, rt));
+          const double dpt = regulators.tangential_change(dgt, W.diagonal(rt));
           apply(rt,
                 std::clamp(state.p[rt] + dpt, -mu[k] * pn, mu[k] * pn) -
                   state.p[rt]);
@@ -314,8 +319,10 @@ namespace FuzzyContact
                          const std::string    &what) const
   {
     const unsigned int         n  = problem.n_nodes();
-    const FullMatrix<double>  &W  = problem.W;
     const std::vector<double> &mu = problem.mu;
+    DenseFlexibility           dense(problem.W);
+    FlexibilityOperator       &W =
+      problem.flexibility != nullptr ? *problem.flexibility : dense;
 
     // Scales of the stopping tests.
     const double     g_scale = gap_scale(step, n);

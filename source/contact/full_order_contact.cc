@@ -33,6 +33,18 @@ namespace FuzzyContact
     {
       return owner.entry(i, j);
     }
+    const double *
+    column(const unsigned int j) override
+    {
+      owner.prepare_column(j);
+      return owner.columns[j]->data();
+    }
+    double
+    diagonal(const unsigned int i) override
+    {
+      owner.prepare_column(i);
+      return owner.entry(i, i);
+    }
 
   private:
     FullOrderContact &owner;

@@ -1,10 +1,11 @@
 #include <fuzzycontact/base/input.h>
+#include <fuzzycontact/base/sparse_cholesky.h>
+#include <fuzzycontact/base/sparse_direct_solver.h>
 #include <fuzzycontact/modal/modal_solver.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/lac/arpack_solver.h>
 #include <deal.II/lac/solver_control.h>
-#include <deal.II/lac/sparse_direct.h>
 
 #include <algorithm>
 #include <cmath>
@@ -138,9 +139,28 @@ namespace FuzzyContact
   }
 
 
+  namespace
+  {
+    // The message for a K - sigma M that cannot be factorised.
+    std::string
+    singular_message(const std::string &what, const double shift)
+    {
+      std::ostringstream message;
+      message << what
+              << ": K - sigma M is singular at the shift sigma = " << shift
+              << ". An unclamped component has rigid-body modes at zero "
+                 "frequency: clamp it, or set a negative 'shift' in "
+                 "'Modal analysis'.";
+      return message.str();
+    }
+  } // namespace
+
+
+  template <class Inverse>
   ModalBasis
   ModalSolver::solve_for(const SparseMatrix<double> &K,
                          const SparseMatrix<double> &M,
+                         const Inverse              &inverse,
                          const unsigned int          n_modes,
                          const std::string          &what) const
   {
@@ -151,27 +171,6 @@ namespace FuzzyContact
                 ExcMessage(what + ": " + std::to_string(n_modes) +
                            " modes are too many for a model with only " +
                            std::to_string(n) + " degrees of freedom."));
-
-    // Factorise K - sigma M once; every Lanczos step is one back-solve.
-    SparseMatrix<double> shifted(K.get_sparsity_pattern());
-    shifted.copy_from(K);
-    if (parameters.shift != 0)
-      shifted.add(-parameters.shift, M);
-    SparseDirectUMFPACK inverse;
-    try
-      {
-        inverse.initialize(shifted);
-      }
-    catch (const ExceptionBase &)
-      {
-        std::ostringstream message;
-        message << what << ": K - sigma M is singular at the shift sigma = "
-                << parameters.shift
-                << ". An unclamped component has rigid-body modes at zero "
-                   "frequency: clamp it, or set a negative 'shift' in "
-                   "'Modal analysis'.";
-        AssertThrow(false, ExcMessage(message.str()));
-      }
 
     std::vector<std::complex<double>> lambda(n_modes);
     std::vector<Vector<double>>       x(n_modes, Vector<double>(n));
@@ -204,10 +203,10 @@ namespace FuzzyContact
       return lambda[a].real() < lambda[b].real();
     });
 
-    // UMFPACK factorises a singular K without complaint (round-off leaves
-    // tiny pivots), and the rigid-body modes then come out as eigenvalues at
-    // the round-off level of the largest ones. Refuse those: they are not
-    // vibration modes of a supported structure.
+    // A factorisation of a singular K can succeed (round-off leaves tiny
+    // positive pivots), and the rigid-body modes then come out as
+    // eigenvalues at the round-off level of the largest ones. Refuse those:
+    // they are not vibration modes of a supported structure.
     if (parameters.shift == 0)
       {
         double lambda_scale = 0;
@@ -265,8 +264,64 @@ namespace FuzzyContact
     AssertThrow(K.m() == M.m() && K.m() > 0,
                 ExcMessage(what + ": K and M must be square, non-empty and of "
                                   "the same size."));
+    // Factorise K - sigma M once; every Lanczos step is one back-solve.
+    SparseMatrix<double> shifted(K.get_sparsity_pattern());
+    shifted.copy_from(K);
+    if (parameters.shift != 0)
+      shifted.add(-parameters.shift, M);
+    if (parameters.shift > 0)
+      {
+        SparseDirectSolver inverse;
+        try
+          {
+            inverse.factorize(shifted);
+          }
+        catch (const ExceptionBase &)
+          {
+            AssertThrow(false,
+                        ExcMessage(singular_message(what, parameters.shift)));
+          }
+        return solve_with(K, M, inverse, what);
+      }
+    SparseCholesky inverse;
+    try
+      {
+        inverse.factorize(shifted, {}, what);
+      }
+    catch (const ExceptionBase &)
+      {
+        AssertThrow(false,
+                    ExcMessage(singular_message(what, parameters.shift)));
+      }
+    return solve_with(K, M, inverse, what);
+  }
+
+
+  ModalBasis
+  ModalSolver::solve(const SparseMatrix<double> &K,
+                     const SparseMatrix<double> &M,
+                     const SparseCholesky       &K_factorisation,
+                     const std::string          &what) const
+  {
+    AssertThrow(K.m() == M.m() && K.m() > 0 && K_factorisation.n() == K.m(),
+                ExcMessage(what + ": K, M and the factorisation of K must be "
+                                  "square, non-empty and of the same size."));
+    AssertThrow(parameters.shift == 0,
+                ExcMessage(what + ": a factorisation of K serves the modal "
+                                  "analysis at shift 0 only."));
+    return solve_with(K, M, K_factorisation, what);
+  }
+
+
+  template <class Inverse>
+  ModalBasis
+  ModalSolver::solve_with(const SparseMatrix<double> &K,
+                          const SparseMatrix<double> &M,
+                          const Inverse              &inverse,
+                          const std::string          &what) const
+  {
     if (parameters.cutoff_frequency <= 0)
-      return solve_for(K, M, parameters.n_modes, what);
+      return solve_for(K, M, inverse, parameters.n_modes, what);
 
     // With a cutoff, ask for more modes until one lies above it.
     const double lambda_cut =
@@ -274,7 +329,7 @@ namespace FuzzyContact
     unsigned int n_wanted = std::max(parameters.n_modes, 6u);
     while (true)
       {
-        ModalBasis basis = solve_for(K, M, n_wanted, what);
+        ModalBasis basis = solve_for(K, M, inverse, n_wanted, what);
         if (basis.eigenvalues.back() > lambda_cut)
           {
             unsigned int keep = 0;

@@ -1,379 +1,189 @@
-#include <fuzzycontact/base/sparse_direct_solver.h>
 #include <fuzzycontact/reduction/reduced_model.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/lac/lapack_templates.h>
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
-#include <sstream>
 
 namespace FuzzyContact
 {
-  unsigned int
-  modes_for_static_error(const ModalBasis     &modes,
-                         const Vector<double> &f,
-                         const Vector<double> &static_solution,
-                         const double          tolerance,
-                         const std::string    &what)
+  namespace
   {
-    const double energy = f * static_solution;
-    AssertThrow(energy > 0,
-                ExcMessage(what + ": the mode error tolerance needs a "
-                                  "non-zero load."));
-    double captured = 0;
-    double error    = 1;
-    for (unsigned int j = 0; j < modes.size(); ++j)
-      {
-        const double a = modes.modes[j] * f;
-        captured += a * a / modes.eigenvalues[j];
-        error = std::sqrt(std::max(0., 1. - captured / energy));
-        if (error <= tolerance)
-          return j + 1;
-      }
-    std::ostringstream message;
-    message << what << ": " << modes.size() << " modes leave a static error of "
-            << error
-            << " in the load response, more than the mode error tolerance "
-            << tolerance << "; raise the number of modes or the cutoff.";
-    AssertThrow(false, ExcMessage(message.str()));
-    return modes.size();
-  }
+    // FullMatrix is row-major; LAPACK reads its data column-major, as the
+    // transpose. These helpers keep that straight.
 
+    // L with K = L L^T, for the symmetric K (column-major lower triangle:
+    // the row-major upper one).
+    FullMatrix<double>
+    cholesky(const FullMatrix<double> &K)
+    {
+      FullMatrix<double>    L    = K;
+      const types::blas_int k    = K.m();
+      types::blas_int       info = 0;
+      if (k > 0)
+        potrf("L", &k, &L(0, 0), &k, &info);
+      AssertThrow(info == 0,
+                  ExcMessage("ReducedContactModel: the reduced stiffness of a "
+                             "component is not positive definite (LAPACK "
+                             "dpotrf, info " +
+                             std::to_string(info) + ")."));
+      return L;
+    }
 
-  ReducedComponent::ReducedComponent(
-    const Component                            &component,
-    const ModalBasis                           &modes,
-    const std::vector<types::global_dof_index> &attachment_dofs,
-    const bool                                  static_correction,
-    const double                                rank_tolerance)
-      : component(component)
-      , modes(modes)
-  {
-    const unsigned int          n_m = modes.size();
-    const SparseMatrix<double> &K   = component.stiffness_matrix();
-    AssertThrow(n_m > 0 || static_correction,
-                ExcMessage("Component " + component.name() +
-                           ": a reduced basis needs modes or the static "
-                           "correction."));
+    // A := A L^{-T} for a row-major A (n x k): its column-major view is
+    // A^T (k x n), and L^{-1} A^T is what the triangular solve gives.
+    void
+    right_solve(const FullMatrix<double> &L, FullMatrix<double> &A)
+    {
+      const types::blas_int k = L.m(), n = A.m();
+      types::blas_int       info = 0;
+      if (k > 0 && n > 0)
+        trtrs("L", "N", "N", &k, &n, &L(0, 0), &k, &A(0, 0), &k, &info);
+      Assert(info == 0, ExcInternalError());
+    }
 
-    // Lambda = Phi^T K Phi (diagonal up to the eigensolver's accuracy).
-    lambda.reinit(n_m, n_m);
-    Vector<double> Kphi(component.n_dofs());
-    for (unsigned int j = 0; j < n_m; ++j)
-      {
-        AssertDimension(modes.modes[j].size(), component.n_dofs());
-        K.vmult(Kphi, modes.modes[j]);
-        for (unsigned int i = 0; i < n_m; ++i)
-          lambda(i, j) = modes.modes[i] * Kphi;
-      }
-    for (unsigned int i = 0; i < n_m; ++i)
-      for (unsigned int j = 0; j < i; ++j)
-        lambda(i, j) = lambda(j, i) = 0.5 * (lambda(i, j) + lambda(j, i));
-    lambda_inverse.reinit(n_m, n_m);
-    if (n_m > 0)
-      lambda_inverse.invert(lambda);
+    // v := L^{-1} v, or L^{-T} v.
+    void
+    solve(const FullMatrix<double> &L, Vector<double> &v, const bool transposed)
+    {
+      const types::blas_int k = L.m(), one = 1;
+      types::blas_int       info = 0;
+      if (k > 0)
+        trtrs("L",
+              transposed ? "T" : "N",
+              "N",
+              &k,
+              &one,
+              &L(0, 0),
+              &k,
+              v.data(),
+              &k,
+              &info);
+      Assert(info == 0, ExcInternalError());
+    }
 
-    unsigned int n_s = 0;
-    if (static_correction)
-      {
-        // Columns of E: unit loads at the attachment DoFs, then the unit
-        // load vectors of the component.
-        std::vector<const Vector<double> *> loads;
-        for (unsigned int l = 0; l < component.description().loads.size(); ++l)
-          if (component.unit_load_vector(l).linfty_norm() > 0)
-            loads.push_back(&component.unit_load_vector(l));
-        const unsigned int n_a = attachment_dofs.size();
-        const unsigned int n_e = n_a + loads.size();
-        AssertThrow(n_e > 0,
-                    ExcMessage("Component " + component.name() +
-                               ": the static correction has neither contact "
-                               "DoFs nor loads to attach modes to."));
-
-        SparseDirectSolver inverse;
-        inverse.factorize(K);
-        psi_raw.assign(n_e, Vector<double>(component.n_dofs()));
-        for (unsigned int e = 0; e < n_e; ++e)
-          {
-            if (e < n_a)
-              psi_raw[e][attachment_dofs[e]] = 1;
-            else
-              psi_raw[e] = *loads[e - n_a];
-            inverse.solve(psi_raw[e]);
-          }
-        // E^T v for a vector v.
-        const auto E_transpose = [&](const unsigned int    e,
-                                     const Vector<double> &v) -> double {
-          return e < n_a ? v[attachment_dofs[e]] : (*loads[e - n_a]) * v;
-        };
-
-        B.reinit(n_m, n_e);
-        for (unsigned int j = 0; j < n_m; ++j)
-          for (unsigned int e = 0; e < n_e; ++e)
-            B(j, e) = E_transpose(e, modes.modes[j]);
-
-        // S = E^T K^{-1} E - B^T Lambda^{-1} B.
-        FullMatrix<double> S(n_e, n_e), R(n_m, n_e);
-        for (unsigned int a = 0; a < n_e; ++a)
-          for (unsigned int e = 0; e < n_e; ++e)
-            S(a, e) = E_transpose(a, psi_raw[e]);
-        if (n_m > 0)
-          {
-            lambda_inverse.mmult(R, B);
-            FullMatrix<double> BtR(n_e, n_e);
-            B.Tmmult(BtR, R);
-            S.add(-1., BtR);
-          }
-        for (unsigned int a = 0; a < n_e; ++a)
-          for (unsigned int e = 0; e < a; ++e)
-            S(a, e) = S(e, a) = 0.5 * (S(a, e) + S(e, a));
-
-        // K-orthonormalise: S = Q D Q^T, X = Q_kept D_kept^{-1/2}.
-        double bound = 0;
-        for (unsigned int a = 0; a < n_e; ++a)
-          {
-            double row = 0;
-            for (unsigned int e = 0; e < n_e; ++e)
-              row += std::abs(S(a, e));
-            bound = std::max(bound, row);
-          }
-        LAPACKFullMatrix<double> S_lapack(n_e, n_e);
-        S_lapack = S;
-        Vector<double>     d;
-        FullMatrix<double> Q;
-        S_lapack.compute_eigenvalues_symmetric(
-          -2 * bound - 1e-300,
-          2 * bound + 1e-300,
-          2 * std::numeric_limits<double>::min(),
-          d,
-          Q);
-        const double              d_max = d.size() > 0 ? d.linfty_norm() : 0.;
-        std::vector<unsigned int> kept;
-        for (unsigned int i = 0; i < d.size(); ++i)
-          if (d[i] > rank_tolerance * d_max)
-            kept.push_back(i);
-        n_s = kept.size();
-        X.reinit(n_e, n_s);
-        for (unsigned int s = 0; s < n_s; ++s)
-          for (unsigned int e = 0; e < n_e; ++e)
-            X(e, s) = Q(e, kept[s]) / std::sqrt(d[kept[s]]);
-        // From here on B holds R = Lambda^{-1} Phi^T E.
-        B = R;
-      }
-
-    K_r.reinit(n_m + n_s, n_m + n_s);
-    for (unsigned int i = 0; i < n_m; ++i)
-      for (unsigned int j = 0; j < n_m; ++j)
-        K_r(i, j) = lambda(i, j);
-    for (unsigned int s = 0; s < n_s; ++s)
-      K_r(n_m + s, n_m + s) = 1;
-  }
-
-
-  unsigned int
-  ReducedComponent::n_modes() const
-  {
-    return modes.size();
-  }
-
-  unsigned int
-  ReducedComponent::n_corrections() const
-  {
-    return X.n();
-  }
-
-  unsigned int
-  ReducedComponent::size() const
-  {
-    return n_modes() + n_corrections();
-  }
-
-  bool
-  ReducedComponent::has_static_correction() const
-  {
-    return !psi_raw.empty();
-  }
-
-  const FullMatrix<double> &
-  ReducedComponent::stiffness() const
-  {
-    return K_r;
-  }
-
-
-  Vector<double>
-  ReducedComponent::project(const Vector<double> &f) const
-  {
-    const unsigned int n_m = n_modes(), n_s = n_corrections();
-    Vector<double>     q(n_m + n_s);
-    Vector<double>     phi_f(n_m);
-    for (unsigned int j = 0; j < n_m; ++j)
-      q[j] = phi_f[j] = modes.modes[j] * f;
-    if (n_s > 0)
-      {
-        // Psi_res^T f = Psi_raw^T f - R^T Phi^T f, then X^T.
-        Vector<double> psi_f(psi_raw.size());
-        for (unsigned int e = 0; e < psi_raw.size(); ++e)
-          psi_f[e] = psi_raw[e] * f;
-        if (n_m > 0)
-          {
-            Vector<double> correction(psi_raw.size());
-            B.Tvmult(correction, phi_f);
-            psi_f -= correction;
-          }
-        Vector<double> qs(n_s);
-        X.Tvmult(qs, psi_f);
-        for (unsigned int s = 0; s < n_s; ++s)
-          q[n_m + s] = qs[s];
-      }
-    return q;
-  }
-
-
-  FullMatrix<double>
-  ReducedComponent::project_rows(const SparseMatrix<double> &C) const
-  {
-    AssertDimension(C.n(), component.n_dofs());
-    const unsigned int m = C.m(), n_m = n_modes(), n_s = n_corrections();
-    FullMatrix<double> Cr(m, n_m + n_s);
-    FullMatrix<double> C_phi(m, n_m);
-    Vector<double>     column(m);
-    for (unsigned int j = 0; j < n_m; ++j)
-      {
-        C.vmult(column, modes.modes[j]);
-        for (unsigned int i = 0; i < m; ++i)
-          Cr(i, j) = C_phi(i, j) = column[i];
-      }
-    if (n_s > 0)
-      {
-        FullMatrix<double> C_psi(m, psi_raw.size());
-        for (unsigned int e = 0; e < psi_raw.size(); ++e)
-          {
-            C.vmult(column, psi_raw[e]);
-            for (unsigned int i = 0; i < m; ++i)
-              C_psi(i, e) = column[i];
-          }
-        // C Psi_res = C Psi_raw - (C Phi) R.
-        if (n_m > 0)
-          {
-            FullMatrix<double> C_phi_R(m, psi_raw.size());
-            C_phi.mmult(C_phi_R, B);
-            C_psi.add(-1., C_phi_R);
-          }
-        FullMatrix<double> C_corr(m, n_s);
-        C_psi.mmult(C_corr, X);
-        for (unsigned int i = 0; i < m; ++i)
-          for (unsigned int s = 0; s < n_s; ++s)
-            Cr(i, n_m + s) = C_corr(i, s);
-      }
-    return Cr;
-  }
-
-
-  FullMatrix<double>
-  ReducedComponent::rows(const std::vector<types::global_dof_index> &dofs) const
-  {
-    const unsigned int n_m = n_modes(), n_s = n_corrections();
-    FullMatrix<double> V(dofs.size(), n_m + n_s);
-    for (unsigned int r = 0; r < dofs.size(); ++r)
-      {
-        AssertIndexRange(dofs[r], component.n_dofs());
-        for (unsigned int j = 0; j < n_m; ++j)
-          V(r, j) = modes.modes[j][dofs[r]];
-        if (n_s > 0)
-          {
-            Vector<double> psi_res(psi_raw.size());
-            for (unsigned int e = 0; e < psi_raw.size(); ++e)
-              {
-                psi_res[e] = psi_raw[e][dofs[r]];
-                for (unsigned int j = 0; j < n_m; ++j)
-                  psi_res[e] -= modes.modes[j][dofs[r]] * B(j, e);
-              }
-            for (unsigned int s = 0; s < n_s; ++s)
-              for (unsigned int e = 0; e < psi_raw.size(); ++e)
-                V(r, n_m + s) += psi_res[e] * X(e, s);
-          }
-      }
-    return V;
-  }
+    void
+    check_finite(const FullMatrix<double> &A)
+    {
+      for (unsigned int i = 0; i < A.m(); ++i)
+        for (unsigned int j = 0; j < A.n(); ++j)
+          AssertThrow(std::isfinite(A(i, j)),
+                      ExcMessage("ReducedContactModel: the reduced contact "
+                                 "flexibility of a component has a non-finite "
+                                 "entry."));
+    }
+  } // namespace
 
 
   void
-  ReducedComponent::expand(const Vector<double> &q, Vector<double> &u) const
+  ReducedContactModel::Part::add_column(const unsigned int j,
+                                        const double       a,
+                                        double            *w) const
   {
-    const unsigned int n_m = n_modes(), n_s = n_corrections();
-    AssertDimension(q.size(), n_m + n_s);
-    u.reinit(component.n_dofs());
-    Vector<double> qm(n_m);
-    for (unsigned int j = 0; j < n_m; ++j)
-      qm[j] = q[j];
-    if (n_s > 0)
+    const unsigned int m = diagonal.size();
+    if (!low_rank)
       {
-        // Psi q_s = Psi_raw (X q_s) - Phi R (X q_s).
-        Vector<double> qs(n_s), xq(psi_raw.size()), rxq(n_m);
-        for (unsigned int s = 0; s < n_s; ++s)
-          qs[s] = q[n_m + s];
-        X.vmult(xq, qs);
-        for (unsigned int e = 0; e < psi_raw.size(); ++e)
-          u.add(xq[e], psi_raw[e]);
-        if (n_m > 0)
-          {
-            B.vmult(rxq, xq);
-            qm -= rxq;
-          }
+        // W_c is symmetric: its row j is its column j.
+        const double *row = &flexibility(j, 0);
+        for (unsigned int i = 0; i < m; ++i)
+          w[i] += a * row[i];
+        return;
       }
-    for (unsigned int j = 0; j < n_m; ++j)
-      u.add(qm[j], modes.modes[j]);
+    // W_c(i, j) = U(i, :) . U(j, :)
+    const unsigned int k   = U.n();
+    const double      *u_j = &U(j, 0);
+    for (unsigned int i = 0; i < m; ++i)
+      {
+        const double *u_i = &U(i, 0);
+        double        d   = 0;
+        for (unsigned int l = 0; l < k; ++l)
+          d += u_i[l] * u_j[l];
+        w[i] += a * d;
+      }
   }
 
 
-  FullMatrix<double>
-  ReducedComponent::zone_stiffness(const unsigned int zone) const
+  // W as the solvers see it: columns combined from the parts on demand,
+  // kept until the model changes.
+  class ReducedContactModel::Flexibility : public FlexibilityOperator
   {
-    AssertIndexRange(zone, component.n_zones());
-    const unsigned int k = size();
-    FullMatrix<double> Kz(k, k);
-    if (component.n_zones() == 1)
-      {
-        Kz = K_r;
-        Kz /= component.zone_moduli()[0];
-        return Kz;
-      }
-    std::vector<Vector<double>> V(k);
-    Vector<double>              e(k), Kv(component.n_dofs());
-    for (unsigned int j = 0; j < k; ++j)
-      {
-        e    = 0;
-        e[j] = 1;
-        expand(e, V[j]);
-      }
-    for (unsigned int j = 0; j < k; ++j)
-      {
-        component.zone_stiffness_matrix(zone).vmult(Kv, V[j]);
-        for (unsigned int i = 0; i <= j; ++i)
-          Kz(i, j) = Kz(j, i) = V[i] * Kv;
-      }
-    return Kz;
-  }
+  public:
+    explicit Flexibility(const ReducedContactModel &model)
+        : model(model)
+        , m(model.problem_.g_initial.size())
+        , cache(m, m)
+        , computed(m, false)
+        , diagonal_(m)
+    {
+    }
 
+    unsigned int
+    size() const override
+    {
+      return m;
+    }
 
-  ReducedComponentMatrices
-  ReducedComponent::matrices(
-    const SparseMatrix<double>                 &gap_operator,
-    const std::vector<types::global_dof_index> &observed_dofs) const
-  {
-    ReducedComponentMatrices r;
-    r.stiffness    = K_r;
-    r.gap_operator = project_rows(gap_operator);
-    for (unsigned int l = 0; l < component.description().loads.size(); ++l)
-      {
-        r.loads.push_back(project(component.reference_load_vector(l)));
-        r.reference_forces.push_back(component.reference_load_force(l));
-      }
-    r.observed_dofs = observed_dofs;
-    r.observation   = rows(observed_dofs);
-    return r;
-  }
+    void
+    prepare(const std::vector<unsigned int> &columns) override
+    {
+      for (const unsigned int j : columns)
+        column(j);
+    }
+
+    double
+    operator()(const unsigned int i, const unsigned int j) const override
+    {
+      Assert(computed[j], ExcMessage("prepare() the column first."));
+      return cache(j, i);
+    }
+
+    const double *
+    column(const unsigned int j) override
+    {
+      AssertIndexRange(j, m);
+      double *w = &cache(j, 0);
+      if (!computed[j])
+        {
+          std::fill(w, w + m, 0.);
+          for (unsigned int c = 0; c < model.variable.size(); ++c)
+            for (const Part *part : {&model.variable[c], &model.fixed[c]})
+              if (part->present)
+                part->add_column(j, 1. / model.scales[c], w);
+          computed[j] = true;
+          list.push_back(j);
+        }
+      return w;
+    }
+
+    double
+    diagonal(const unsigned int i) override
+    {
+      return diagonal_[i];
+    }
+
+    // Forgets the columns and combines the diagonal afresh.
+    void
+    reset()
+    {
+      for (const unsigned int j : list)
+        computed[j] = false;
+      list.clear();
+      diagonal_ = 0;
+      for (unsigned int c = 0; c < model.variable.size(); ++c)
+        for (const Part *part : {&model.variable[c], &model.fixed[c]})
+          if (part->present)
+            diagonal_.add(1. / model.scales[c], part->diagonal);
+    }
+
+  private:
+    const ReducedContactModel &model;
+    const unsigned int         m;
+    FullMatrix<double>         cache; // row j: column j of W
+    std::vector<bool>          computed;
+    std::vector<unsigned int>  list;
+    Vector<double>             diagonal_;
+  };
 
 
   ReducedContactModel::ReducedContactModel(
@@ -396,8 +206,13 @@ namespace FuzzyContact
         compute_blocks(variable[c]);
         load_forces.push_back(variable[c].matrices.reference_forces);
       }
-    assemble_problem();
+    flexibility_         = std::make_shared<Flexibility>(*this);
+    problem_.flexibility = flexibility_;
+    flexibility_changed();
   }
+
+
+  ReducedContactModel::~ReducedContactModel() = default;
 
 
   void
@@ -447,46 +262,56 @@ namespace FuzzyContact
                   (r.observed_dofs.empty() || r.observation.n() == k),
                 ExcMessage("ReducedContactModel: the reduced matrices of a "
                            "component do not fit together."));
-    // (Kept behind a pointer: copying a LAPACKFullMatrix forgets that it
-    // holds a factorisation.)
-    part.factor = std::make_unique<LAPACKFullMatrix<double>>(k, k);
-    LAPACKFullMatrix<double> &factor = *part.factor;
-    factor                           = r.stiffness;
-    factor.set_property(LAPACKSupport::symmetric);
-    factor.compute_cholesky_factorization();
+    part.factor = cholesky(r.stiffness);
 
-    // Y = K_r^{-1} C_r^T, W_c = C_r Y, g_load,c = C_r K_r^{-1} f_r.
-    LAPACKFullMatrix<double> Y(k, m);
-    for (unsigned int i = 0; i < k; ++i)
-      for (unsigned int j = 0; j < m; ++j)
-        Y(i, j) = r.gap_operator(j, i);
-    factor.solve(Y);
-    FullMatrix<double> Yf(k, m), Wc(m, m);
-    for (unsigned int i = 0; i < k; ++i)
-      for (unsigned int j = 0; j < m; ++j)
-        Yf(i, j) = Y(i, j);
-    r.gap_operator.mmult(Wc, Yf);
+    // U = C_r L^{-T}: W_c = C_r K_r^{-1} C_r^T = U U^T.
+    FullMatrix<double> U = r.gap_operator;
+    right_solve(part.factor, U);
+    check_finite(U);
+    part.low_rank = 2 * k < m;
+    part.diagonal.reinit(m);
     for (unsigned int i = 0; i < m; ++i)
-      for (unsigned int j = 0; j < i; ++j)
-        Wc(i, j) = Wc(j, i) = 0.5 * (Wc(i, j) + Wc(j, i));
-    part.flexibility = std::move(Wc);
+      for (unsigned int l = 0; l < k; ++l)
+        part.diagonal[i] += U(i, l) * U(i, l);
+    if (part.low_rank)
+      {
+        part.U = U;
+        part.flexibility.reinit(0, 0);
+      }
+    else
+      {
+        part.flexibility.reinit(m, m);
+        U.mTmult(part.flexibility, U);
+        for (unsigned int i = 0; i < m; ++i)
+          for (unsigned int j = 0; j < i; ++j)
+            part.flexibility(i, j) = part.flexibility(j, i) =
+              0.5 * (part.flexibility(i, j) + part.flexibility(j, i));
+        part.U.reinit(0, 0);
+      }
 
     // Recovery of the observed displacements without a reduced solve:
-    // u_obs = lambda O K_r^{-1} f_r + (O K_r^{-1} C_r^T) p.
+    // u_obs = lambda O K_r^{-1} f_r + (O K_r^{-1} C_r^T) p, with
+    // O K_r^{-1} C_r^T = (O L^{-T}) U^T.
     const unsigned int n_obs = r.observed_dofs.size();
+    FullMatrix<double> O_L   = r.observation;
+    right_solve(part.factor, O_L);
     part.observation_flexibility.reinit(n_obs, m);
-    if (n_obs > 0)
-      r.observation.mmult(part.observation_flexibility, Yf);
+    if (n_obs > 0 && k > 0)
+      O_L.mTmult(part.observation_flexibility, U);
     part.load_gaps.clear();
     part.observation_loads.clear();
     for (const Vector<double> &f : r.loads)
       {
-        Vector<double> q = f;
-        factor.solve(q);
+        // h = L^{-1} f: g = C_r K_r^{-1} f = U h, u = O L^{-T} h.
+        Vector<double> h = f;
+        solve(part.factor, h, false);
         Vector<double> g(m), u(n_obs);
-        r.gap_operator.vmult(g, q);
+        U.vmult(g, h);
         if (n_obs > 0)
-          r.observation.vmult(u, q);
+          O_L.vmult(u, h);
+        AssertThrow(std::isfinite(g.l2_norm()) && std::isfinite(u.l2_norm()),
+                    ExcMessage("ReducedContactModel: the load response of a "
+                               "component is not finite."));
         part.load_gaps.push_back(std::move(g));
         part.observation_loads.push_back(std::move(u));
       }
@@ -495,14 +320,9 @@ namespace FuzzyContact
 
 
   void
-  ReducedContactModel::assemble_problem()
+  ReducedContactModel::flexibility_changed()
   {
-    const unsigned int m = problem_.g_initial.size();
-    problem_.W.reinit(m, m);
-    for (unsigned int c = 0; c < variable.size(); ++c)
-      for (const Part *part : {&variable[c], &fixed[c]})
-        if (part->present)
-          problem_.W.add(1. / scales[c], part->flexibility);
+    flexibility_->reset();
     assemble_load_gaps();
   }
 
@@ -537,7 +357,7 @@ namespace FuzzyContact
     if (s == scales)
       return;
     scales = s;
-    assemble_problem();
+    flexibility_changed();
   }
 
 
@@ -549,7 +369,7 @@ namespace FuzzyContact
     variable[c].matrices = std::move(matrices);
     scales[c]            = 1.;
     compute_blocks(variable[c]);
-    assemble_problem();
+    flexibility_changed();
   }
 
 
@@ -563,7 +383,7 @@ namespace FuzzyContact
                            "component must observe the same DoFs."));
     fixed[c].matrices = std::move(matrices);
     compute_blocks(fixed[c]);
-    assemble_problem();
+    flexibility_changed();
   }
 
 
@@ -579,16 +399,37 @@ namespace FuzzyContact
     return problem_;
   }
 
+
   FullMatrix<double>
   ReducedContactModel::component_flexibility(const unsigned int c) const
   {
     AssertIndexRange(c, variable.size());
-    FullMatrix<double> W = variable[c].flexibility;
-    if (fixed[c].present)
-      W.add(1., fixed[c].flexibility);
-    W /= scales[c];
+    const unsigned int  m = problem_.g_initial.size();
+    FullMatrix<double>  W(m, m);
+    std::vector<double> w(m);
+    for (unsigned int j = 0; j < m; ++j)
+      {
+        std::fill(w.begin(), w.end(), 0.);
+        for (const Part *part : {&variable[c], &fixed[c]})
+          if (part->present)
+            part->add_column(j, 1. / scales[c], w.data());
+        for (unsigned int i = 0; i < m; ++i)
+          W(i, j) = w[i];
+      }
     return W;
   }
+
+
+  FullMatrix<double>
+  ReducedContactModel::flexibility() const
+  {
+    const unsigned int m = problem_.g_initial.size();
+    FullMatrix<double> W(m, m);
+    for (unsigned int c = 0; c < variable.size(); ++c)
+      W.add(1., component_flexibility(c));
+    return W;
+  }
+
 
   unsigned int
   ReducedContactModel::n_components() const
@@ -613,7 +454,8 @@ namespace FuzzyContact
                 rhs.add(load_factor * this->load_factor(c, l),
                         part->matrices.loads[l]);
               part->matrices.gap_operator.Tvmult_add(rhs, p);
-              part->factor->solve(rhs);
+              solve(part->factor, rhs, false);
+              solve(part->factor, rhs, true);
               rhs /= scales[c];
               parts.push_back(std::move(rhs));
             }

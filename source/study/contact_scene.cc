@@ -2,6 +2,8 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <algorithm>
+
 namespace FuzzyContact
 {
   ContactScene::ContactScene(const Scene       &scene,
@@ -24,6 +26,7 @@ namespace FuzzyContact
     interface_ = std::make_unique<ContactInterface>(scene_,
                                                     components_,
                                                     penetration_tolerance);
+    factorisations.resize(owned.size());
   }
 
 
@@ -83,7 +86,52 @@ namespace FuzzyContact
     for (unsigned int c = 0; c < owned.size(); ++c)
       if (state.zone_moduli[c] != owned[c]->zone_moduli() ||
           state.zone_densities[c] != owned[c]->zone_densities())
-        owned[c]->set_zone_materials(state.zone_moduli[c],
-                                     state.zone_densities[c]);
+        {
+          owned[c]->set_zone_materials(state.zone_moduli[c],
+                                       state.zone_densities[c]);
+          factorisations[c].reset();
+        }
+  }
+
+
+  std::vector<types::global_dof_index>
+  ContactScene::boundary_dofs(const unsigned int c) const
+  {
+    AssertIndexRange(c, owned.size());
+    std::vector<types::global_dof_index> dofs = interface_->contact_dofs(c);
+    const Component                     &component = *owned[c];
+    for (unsigned int l = 0; l < component.description().loads.size(); ++l)
+      {
+        const Vector<double> &f = component.unit_load_vector(l);
+        for (types::global_dof_index d = 0; d < f.size(); ++d)
+          if (f[d] != 0)
+            dofs.push_back(d);
+      }
+    std::sort(dofs.begin(), dofs.end());
+    dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+    return dofs;
+  }
+
+
+  std::shared_ptr<const SparseCholesky>
+  ContactScene::stiffness_factorisation(const unsigned int c,
+                                        TimerOutput       *timer) const
+  {
+    AssertIndexRange(c, owned.size());
+    if (factorisations[c] == nullptr)
+      {
+        std::unique_ptr<TimerOutput::Scope> scope;
+        if (timer != nullptr)
+          scope = std::make_unique<TimerOutput::Scope>(
+            *timer,
+            "stiffness factorisation (CHOLMOD)");
+        auto factorisation = std::make_shared<SparseCholesky>();
+        factorisation->factorize(owned[c]->stiffness_matrix(),
+                                 boundary_dofs(c),
+                                 "Component " + owned[c]->name() +
+                                   ": the stiffness matrix");
+        factorisations[c] = std::move(factorisation);
+      }
+    return factorisations[c];
   }
 } // namespace FuzzyContact

@@ -1,4 +1,3 @@
-#include <fuzzycontact/base/sparse_direct_solver.h>
 #include <fuzzycontact/contact/fl2c.h>
 #include <fuzzycontact/study/reduced_order_model.h>
 
@@ -102,14 +101,30 @@ namespace FuzzyContact
                   const ModalParameters &parameters,
                   TimerOutput           *timer)
   {
+    // At shift 0, ARPACK works on the factorisation of K that the static
+    // correction uses too.
     const ModalSolver       solver(parameters);
     std::vector<ModalBasis> modes;
-    for (const Component *component : bodies.components())
+    for (unsigned int c = 0; c < bodies.n_components(); ++c)
       {
-        auto scope = time(timer, "modes (ARPACK)");
-        modes.push_back(solver.solve(component->stiffness_matrix(),
-                                     component->mass_matrix(),
-                                     "Component " + component->name()));
+        const Component  &component = bodies.component(c);
+        const std::string what      = "Component " + component.name();
+        if (parameters.shift == 0)
+          {
+            const auto factorisation = bodies.stiffness_factorisation(c, timer);
+            auto       scope         = time(timer, "modes (ARPACK)");
+            modes.push_back(solver.solve(component.stiffness_matrix(),
+                                         component.mass_matrix(),
+                                         *factorisation,
+                                         what));
+          }
+        else
+          {
+            auto scope = time(timer, "modes (ARPACK)");
+            modes.push_back(solver.solve(component.stiffness_matrix(),
+                                         component.mass_matrix(),
+                                         what));
+          }
       }
     return modes;
   }
@@ -133,10 +148,8 @@ namespace FuzzyContact
           f[it->column()] = it->value();
         if (f.linfty_norm() == 0)
           continue;
-        SparseDirectSolver inverse;
-        inverse.factorize(component.stiffness_matrix());
         Vector<double> u = f;
-        inverse.solve(u);
+        bodies.stiffness_factorisation(c)->solve(u);
         const unsigned int n =
           modes_for_static_error(modes[c],
                                  f,
@@ -200,10 +213,12 @@ namespace FuzzyContact
         ComponentModel  &m         = *models[c];
         const Component &component = bodies.component(c);
         {
-          auto scope = time(timer, "static correction modes");
+          const auto factorisation = bodies.stiffness_factorisation(c, timer);
+          auto       scope         = time(timer, "static correction modes");
           m.reduced =
             std::make_unique<ReducedComponent>(component,
                                                m.modes,
+                                               factorisation,
                                                interface.contact_dofs(c),
                                                settings.static_correction,
                                                settings.rank_tolerance);
@@ -302,6 +317,9 @@ namespace FuzzyContact
     const unsigned int n_s = galerkin ? m.reduced->n_corrections() : 0;
     const unsigned int n_T = T.size();
     Vector<double>     Kt(component.n_dofs());
+    const std::vector<FullMatrix<double>> Kz =
+      n_s > 0 ? m.reduced->zone_stiffnesses()
+              : std::vector<FullMatrix<double>>();
     for (unsigned int z = 0; z < component.n_zones(); ++z)
       {
         FullMatrix<double> TKpsi(n_T, n_s);
@@ -313,9 +331,8 @@ namespace FuzzyContact
               TKpsi(i, j) = q[n_m + j];
           }
         m.T_K_psi.push_back(std::move(TKpsi));
-        m.psi_K_psi.push_back(
-          n_s > 0 ? block(m.reduced->zone_stiffness(z), n_m, n_s, n_m, n_s)
-                  : FullMatrix<double>());
+        m.psi_K_psi.push_back(n_s > 0 ? block(Kz[z], n_m, n_s, n_m, n_s)
+                                      : FullMatrix<double>());
       }
     const SparseMatrix<double> &C = bodies.interface().gap_operator(c);
     m.C_T                         = T.apply(C);

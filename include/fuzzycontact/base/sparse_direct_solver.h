@@ -42,6 +42,9 @@ namespace FuzzyContact
     /** Overwrites @p b by A^{-1} b. */
     void
     solve(Vector<double> &b) const;
+    /** dst = A^{-1} src (the interface of an inverse operator). */
+    void
+    vmult(Vector<double> &dst, const Vector<double> &src) const;
 
     /** Size of the factorised matrix (0 before factorize()). */
     types::global_dof_index

@@ -47,6 +47,7 @@
 
 #include <array>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -80,7 +81,10 @@ namespace FuzzyContact
    * Access to the contact flexibility W, which a solver may only need in
    * part: the full-order solver computes a column of W only when the
    * active set first needs it (two sparse back-substitutions), the reduced
-   * models hold W as a dense matrix.
+   * models combine a column of W from their components' parts when a
+   * solver first asks for it (ReducedContactModel), and a dense W is read
+   * as it is (DenseFlexibility). W is symmetric, so a column is also a row:
+   * column() returns it contiguously.
    */
   class FlexibilityOperator
   {
@@ -95,6 +99,15 @@ namespace FuzzyContact
     /** W(i, j); column j must have been prepared. */
     virtual double
     operator()(const unsigned int i, const unsigned int j) const = 0;
+    /**
+     * Column j of W, size() contiguous entries (prepares it if needed);
+     * valid until the next call of column() or a change of the operator.
+     */
+    virtual const double *
+    column(const unsigned int j) = 0;
+    /** W(i, i), whether or not column i was prepared. */
+    virtual double
+    diagonal(const unsigned int i) = 0;
   };
 
   /** A FlexibilityOperator that holds W as a dense matrix. */
@@ -108,9 +121,15 @@ namespace FuzzyContact
     prepare(const std::vector<unsigned int> &columns) override;
     double
     operator()(const unsigned int i, const unsigned int j) const override;
+    /** Column j of W, gathered from the rows. */
+    const double *
+    column(const unsigned int j) override;
+    double
+    diagonal(const unsigned int i) override;
 
   private:
     const FullMatrix<double> &W;
+    std::vector<double>       gathered;
   };
 
   /**
@@ -120,8 +139,17 @@ namespace FuzzyContact
    */
   struct ContactProblem
   {
-    /** Contact flexibility [m/N], n_rows x n_rows, symmetric. */
+    /**
+     * Contact flexibility [m/N], n_rows x n_rows, symmetric; empty when
+     * flexibility is set.
+     */
     FullMatrix<double> W;
+    /**
+     * W as an operator, if it is not held in W (the reduced models combine
+     * its columns on demand; they validate their parts when they build
+     * them).
+     */
+    std::shared_ptr<FlexibilityOperator> flexibility;
     /** Gaps without load and contact forces (normal rows: g0). */
     Vector<double> g_initial;
     /** Change of the gaps under the external load at load factor 1. */
@@ -142,7 +170,10 @@ namespace FuzzyContact
     /** The same coefficient for every node (>= 0). */
     void
     set_friction_coefficient(const double mu);
-    /** Throws if sizes disagree or an entry is not finite. */
+    /**
+     * Throws if sizes disagree or an entry is not finite (of W only if W is
+     * held densely: an operator's parts are checked where they are built).
+     */
     void
     check() const;
   };

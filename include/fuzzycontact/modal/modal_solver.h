@@ -77,13 +77,19 @@ namespace FuzzyContact
                      const std::vector<double>         &eigenvalues,
                      const std::vector<Vector<double>> &modes);
 
+  class SparseCholesky;
+
   class ModalSolver
   {
   public:
     explicit ModalSolver(const ModalParameters &parameters);
 
     /**
-     * Lowest modes of (K, M). @p what names the structure in messages.
+     * Lowest modes of (K, M), by ARPACK in shift-invert mode on a
+     * factorisation of K - sigma M: a sparse Cholesky (CHOLMOD) for
+     * sigma <= 0, where K - sigma M is positive definite for a supported
+     * structure, a sparse LU (UMFPACK) above. Every Lanczos step is one
+     * plain back-substitution. @p what names the structure in messages.
      * Throws with a clear message if ARPACK fails or the problem is
      * singular at the chosen shift (for instance a free body with
      * shift 0).
@@ -93,10 +99,30 @@ namespace FuzzyContact
           const SparseMatrix<double> &M,
           const std::string          &what) const;
 
+    /**
+     * The same with a factorisation of K that the caller already has (the
+     * one its static correction uses): the shift must be 0.
+     */
+    ModalBasis
+    solve(const SparseMatrix<double> &K,
+          const SparseMatrix<double> &M,
+          const SparseCholesky       &K_factorisation,
+          const std::string          &what) const;
+
   private:
+    // The modes with the inverse operator (K - sigma M)^{-1} of @p inverse,
+    // n_modes of them or, with a cutoff, every one below it.
+    template <class Inverse>
+    ModalBasis
+    solve_with(const SparseMatrix<double> &K,
+               const SparseMatrix<double> &M,
+               const Inverse              &inverse,
+               const std::string          &what) const;
+    template <class Inverse>
     ModalBasis
     solve_for(const SparseMatrix<double> &K,
               const SparseMatrix<double> &M,
+              const Inverse              &inverse,
               const unsigned int          n_modes,
               const std::string          &what) const;
 

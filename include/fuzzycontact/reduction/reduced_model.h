@@ -11,11 +11,12 @@
 // touches and the component's unit load vectors. They are made independent
 // of the modes by K-orthogonal projection, Psi_res = Psi_raw - Phi
 // Lambda^{-1} Phi^T E with Lambda = Phi^T K Phi (the residual flexibility
-// of MacNeal and Craig-Chang), and K-orthonormalised through the
-// eigenvectors of their Gram matrix S = Psi_res^T K Psi_res = E^T K^{-1} E -
-// (Phi^T E)^T Lambda^{-1} Phi^T E, dropping directions whose eigenvalue is
-// below rank_tolerance times the largest (linearly dependent attachment
-// modes): Psi = Psi_res X with X = Q D^{-1/2}. Then
+// of MacNeal and Craig-Chang), and K-orthonormalised through a pivoted
+// Cholesky factorisation of their Gram matrix S = Psi_res^T K Psi_res =
+// E^T K^{-1} E - (Phi^T E)^T Lambda^{-1} Phi^T E, P^T S P = L L^T, stopping
+// at pivots below rank_tolerance times the largest diagonal entry
+// (linearly dependent attachment modes): Psi = Psi_res X with
+// X = P_r L_r^{-T}. Then
 //
 //   K_r = V^T K V = [Lambda, 0; 0, I],
 //
@@ -25,6 +26,10 @@
 // up to the accuracy of the back-substitutions. Without it, point contact
 // forces converge slowly in the number of modes.
 //
+// The basis is formed without full-length correction vectors, from one
+// sparse Cholesky factorisation per component with the contact and load
+// DoFs ordered last (reduced_component.h).
+//
 // The reduced contact problem is built from small matrices only
 // (ReducedComponentMatrices: K_r, C_r = C_c V, f_r = V^T f_c and the rows of
 // V at observed DoFs), so that a fuzzy study can rebuild it for reanalysed
@@ -32,18 +37,24 @@
 //
 //   W = sum_c C_r,c K_r,c^{-1} C_r,c^T,   g_load = sum_c C_r,c K_r,c^{-1}
 //   f_r,c.
+//
+// W is never assembled per state. Each part W_c is formed, checked and
+// kept when it is built, densely or, when its rank k is below half its
+// size m, as a factor U_c = C_r,c L_c^{-T} (K_r,c = L_c L_c^T, W_c = U_c
+// U_c^T). A solver reads W through a FlexibilityOperator that combines a
+// column of W = sum_c W_c / s_c the first time it asks for it in a state
+// (O(m) per dense part, O(m k) per factored one) and keeps it, contiguous,
+// until the state changes. A new state thus costs O(m) plus the columns the
+// solver touches: a handful when few nodes close, not the O(m^2) of a
+// dense W.
 
 #ifndef fuzzycontact_reduction_reduced_model_h
 #define fuzzycontact_reduction_reduced_model_h
 
-#include <fuzzycontact/contact/contact_interface.h>
 #include <fuzzycontact/contact/contact_problem.h>
-#include <fuzzycontact/fe/component.h>
-#include <fuzzycontact/modal/modal_solver.h>
+#include <fuzzycontact/reduction/reduced_component.h>
 
 #include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/lapack_full_matrix.h>
-#include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <memory>
@@ -52,115 +63,6 @@
 
 namespace FuzzyContact
 {
-  /**
-   * The smallest number of modes of @p modes whose modal static solution of
-   * the load @p f has a relative error in the energy norm of at most
-   * @p tolerance: sqrt(1 - sum_j (phi_j^T f)^2 / lambda_j / (f^T K^{-1} f)),
-   * where @p static_solution = K^{-1} f. Throws if all the modes together
-   * do not reach it.
-   */
-  unsigned int
-  modes_for_static_error(const ModalBasis     &modes,
-                         const Vector<double> &f,
-                         const Vector<double> &static_solution,
-                         const double          tolerance,
-                         const std::string    &what);
-
-  /**
-   * The small matrices of one reduced component, all that the reduced
-   * contact problem needs.
-   */
-  struct ReducedComponentMatrices
-  {
-    /** K_r = V^T K V (k x k, symmetric positive definite). */
-    FullMatrix<double> stiffness;
-    /** C_r = C_c V (rows of the contact interface x k). */
-    FullMatrix<double> gap_operator;
-    /**
-     * f_r,l = V^T f_l for every load l of the component, at its reference
-     * force (Component::reference_load_force()).
-     */
-    std::vector<Vector<double>> loads;
-    /** The reference force [N] of each load. */
-    std::vector<double> reference_forces;
-    /** DoFs whose displacements the solvers report, and V's rows there. */
-    std::vector<types::global_dof_index> observed_dofs;
-    FullMatrix<double>                   observation;
-  };
-
-  /**
-   * The reduction basis V of one component, modes with or without static
-   * correction (see the top of this file).
-   */
-  class ReducedComponent
-  {
-  public:
-    /**
-     * @p modes: M-normalised modes of @p component (all of them are used);
-     * @p attachment_dofs: the DoFs of the static correction (ignored
-     * without it). The component's current stiffness is the nominal one.
-     */
-    ReducedComponent(
-      const Component                            &component,
-      const ModalBasis                           &modes,
-      const std::vector<types::global_dof_index> &attachment_dofs,
-      const bool                                  static_correction,
-      const double                                rank_tolerance = 1e-12);
-
-    unsigned int
-    n_modes() const;
-    unsigned int
-    n_corrections() const;
-    /** k = n_modes() + n_corrections(). */
-    unsigned int
-    size() const;
-    bool
-    has_static_correction() const;
-
-    /** K_r = V^T K V at the nominal stiffness. */
-    const FullMatrix<double> &
-    stiffness() const;
-    /**
-     * V^T K_z V for zone z of the component. For a single-zone component
-     * K = E K_z, so this is K_r / E; otherwise it is computed from the
-     * basis vectors (O(n k^2)).
-     */
-    FullMatrix<double>
-    zone_stiffness(const unsigned int zone) const;
-    /** V^T f. */
-    Vector<double>
-    project(const Vector<double> &f) const;
-    /** C V for a sparse C acting on this component's DoFs. */
-    FullMatrix<double>
-    project_rows(const SparseMatrix<double> &C) const;
-    /** The rows of V at @p dofs. */
-    FullMatrix<double>
-    rows(const std::vector<types::global_dof_index> &dofs) const;
-    /** u = V q. */
-    void
-    expand(const Vector<double> &q, Vector<double> &u) const;
-
-    /**
-     * The reduced matrices of this component for the gap operator block
-     * @p gap_operator (C_c of the contact interface), observing
-     * @p observed_dofs.
-     */
-    ReducedComponentMatrices
-    matrices(const SparseMatrix<double>                 &gap_operator,
-             const std::vector<types::global_dof_index> &observed_dofs) const;
-
-  private:
-    const Component   &component;
-    const ModalBasis  &modes;
-    FullMatrix<double> lambda;         // Phi^T K Phi
-    FullMatrix<double> lambda_inverse; //
-    // Static correction: Psi_raw = K^{-1} E, B = Phi^T E, X.
-    std::vector<Vector<double>> psi_raw;
-    FullMatrix<double>          B;
-    FullMatrix<double>          X;
-    FullMatrix<double>          K_r;
-  };
-
   /**
    * The reduced contact problem of several components: W and g_load from
    * their small matrices, and the recovery of displacements.
@@ -176,6 +78,11 @@ namespace FuzzyContact
     ReducedContactModel(std::vector<ReducedComponentMatrices> components,
                         const Vector<double>                 &g_initial,
                         const std::vector<double>            &mu);
+    // The problem's flexibility operator refers to this object.
+    ReducedContactModel(const ReducedContactModel &) = delete;
+    ReducedContactModel &
+    operator=(const ReducedContactModel &) = delete;
+    ~ReducedContactModel();
 
     /**
      * The total force of every load [N], load_forces[c][l] for load l of
@@ -184,24 +91,31 @@ namespace FuzzyContact
     void
     set_load_forces(const std::vector<std::vector<double>> &load_forces);
 
+    /**
+     * The problem: W as an operator (ContactProblem::flexibility) that
+     * combines its columns on demand, g_initial, g_load and mu.
+     */
     const ContactProblem &
     problem() const;
     /** The problem, to change mu or shift the gaps. */
     ContactProblem &
     problem();
+    /** W at the current state, assembled (for checks and reports). */
+    FullMatrix<double>
+    flexibility() const;
     /**
      * Component c's stiffness is now s_c times the one its reduced matrices
      * were built for (a change of E of every zone by one factor): W and
      * g_load become sums of W_c / s_c and g_load,c / s_c, and the recovered
-     * displacements scale likewise. Exact, O(rows^2) per component.
+     * displacements scale likewise. Exact, O(rows) per component.
      */
     void
     set_stiffness_scales(const std::vector<double> &scales);
 
     /**
      * Replaces the reduced matrices of component @p c (for instance those
-     * of a reanalysed basis) and rebuilds W and g_load; the component's
-     * scale is reset to 1.
+     * of a reanalysed basis) and rebuilds its blocks; the component's scale
+     * is reset to 1.
      */
     void
     replace_component(const unsigned int c, ReducedComponentMatrices matrices);
@@ -212,8 +126,8 @@ namespace FuzzyContact
      * part) and these, whose blocks are formed once here. This is how the
      * residual flexibility of static correction modes stays at its nominal
      * value while the modal part is re-analysed (MacNeal's residual
-     * flexibility): a new modal part then costs O(rows^2 n_modes), not a
-     * factorisation of the whole reduced stiffness.
+     * flexibility): a new modal part of n_modes vectors then costs
+     * O(rows n_modes^2), not a factorisation of the whole reduced stiffness.
      */
     void
     set_fixed_part(const unsigned int c, ReducedComponentMatrices fixed);
@@ -236,7 +150,7 @@ namespace FuzzyContact
      * The solution of a solver in reduced coordinates: forces, gaps
      * (g_free + W p), statuses, totals and the displacements at every
      * observed DoF, recovered as lambda O K_r^{-1} f_r + (O K_r^{-1} C_r^T) p
-     * with matrices formed when the model is built (no reduced solve).
+     * with matrices formed when the part is built (no reduced solve).
      */
     ContactSolution
     solution(const ContactState &state,
@@ -245,25 +159,35 @@ namespace FuzzyContact
 
   private:
     // The reduced matrices of (a part of) one component and what is formed
-    // from them: the factorised K_r, W_c = C_r K_r^{-1} C_r^T, g_load,c,l =
+    // from them: the Cholesky factor L of K_r, W_c = C_r K_r^{-1} C_r^T
+    // (dense, or its factor U = C_r L^{-T}) and its diagonal, g_load,c,l =
     // C_r K_r^{-1} f_r,l, and O K_r^{-1} C_r^T, O K_r^{-1} f_r,l, the
     // observed displacements straight from the forces.
     struct Part
     {
-      ReducedComponentMatrices                  matrices;
-      std::unique_ptr<LAPACKFullMatrix<double>> factor;
-      FullMatrix<double>                        flexibility;
-      std::vector<Vector<double>>               load_gaps;
-      FullMatrix<double>                        observation_flexibility;
-      std::vector<Vector<double>>               observation_loads;
-      bool                                      present = false;
+      ReducedComponentMatrices    matrices;
+      FullMatrix<double>          factor; // L (column-major: L^T row-major)
+      bool                        low_rank = false;
+      FullMatrix<double>          flexibility; // dense W_c
+      FullMatrix<double>          U;           // W_c = U U^T
+      Vector<double>              diagonal;
+      std::vector<Vector<double>> load_gaps;
+      FullMatrix<double>          observation_flexibility;
+      std::vector<Vector<double>> observation_loads;
+      bool                        present = false;
+
+      // Adds a W_c(:, j) to @p w.
+      void
+      add_column(const unsigned int j, const double a, double *w) const;
     };
+    class Flexibility;
+
     // Checks and factorises a part's matrices, and forms its blocks.
     void
     compute_blocks(Part &part) const;
-    // W = sum_c W_c / s_c, and g_load.
+    // The state of W changed: columns are combined afresh.
     void
-    assemble_problem();
+    flexibility_changed();
     // g_load = sum_c sum_l (F_l / F_ref,l) g_load,c,l / s_c.
     void
     assemble_load_gaps();
@@ -274,6 +198,7 @@ namespace FuzzyContact
     std::vector<Part>                variable, fixed;
     std::vector<double>              scales;
     std::vector<std::vector<double>> load_forces;
+    std::shared_ptr<Flexibility>     flexibility_;
     ContactProblem                   problem_;
   };
 } // namespace FuzzyContact

@@ -11,6 +11,7 @@
 #ifndef fuzzycontact_study_contact_scene_h
 #define fuzzycontact_study_contact_scene_h
 
+#include <fuzzycontact/base/sparse_cholesky.h>
 #include <fuzzycontact/contact/contact_interface.h>
 #include <fuzzycontact/fe/component.h>
 #include <fuzzycontact/scene/scene.h>
@@ -61,11 +62,31 @@ namespace FuzzyContact
     void
     set_materials(const SceneState &state);
 
+    /**
+     * The DoFs of component @p c on which its reduced model lives: its
+     * contact DoFs and the DoFs its loads act on (sorted).
+     */
+    std::vector<types::global_dof_index>
+    boundary_dofs(const unsigned int c) const;
+
+    /**
+     * The sparse Cholesky factorisation of component @p c's stiffness at
+     * its current materials, with boundary_dofs(c) ordered last. It is made
+     * on first use ("stiffness factorisation (CHOLMOD)" in @p timer) and
+     * kept until set_materials() changes the component; its holders keep
+     * theirs. The modes, the static correction and the load responses of a
+     * reduced model all use it.
+     */
+    std::shared_ptr<const SparseCholesky>
+    stiffness_factorisation(const unsigned int c,
+                            TimerOutput       *timer = nullptr) const;
+
   private:
-    Scene                                   scene_;
-    std::vector<std::unique_ptr<Component>> owned;
-    std::vector<const Component *>          components_;
-    std::unique_ptr<ContactInterface>       interface_;
+    Scene                                                      scene_;
+    std::vector<std::unique_ptr<Component>>                    owned;
+    std::vector<const Component *>                             components_;
+    std::unique_ptr<ContactInterface>                          interface_;
+    mutable std::vector<std::shared_ptr<const SparseCholesky>> factorisations;
   };
 } // namespace FuzzyContact
 

@@ -1,0 +1,178 @@
+// The reduction basis of one component (see reduced_model.h for the
+// method): its modes Phi, with or without static correction modes Psi.
+//
+// Everything the reduced contact problem needs lives on a few DoFs B: the
+// contact DoFs, the DoFs the loads act on, and (mostly) the observed ones.
+// The component's stiffness is factorised once, by a sparse Cholesky with B
+// ordered last (base/sparse_cholesky.h), whose trailing block gives
+// G = (K^{-1})_BB without a single solve. The attachment modes are
+// Psi_raw = K^{-1} E with the columns of E supported on B, so their rows at
+// B are G E_B, and the whole static correction is formed from m x m and
+// m x n_e matrices (m = |B|):
+//
+//   R = Lambda^{-1} Phi_B^T E_B,
+//   S = E_B^T G E_B - (Phi_B^T E_B)^T R  (the Gram matrix of Psi_res),
+//   P^T S P = L L^T (pivoted Cholesky, stopping at pivots below
+//                    rank_tolerance times the largest diagonal entry:
+//                    linearly dependent attachment modes),
+//   X = P_r L_r^{-T},  Psi = Psi_res X,  so Psi^T K Psi = X^T S X = I,
+//
+// and V_B = [Phi_B, (G E_B - Phi_B R) X], the basis at B. No full-length
+// correction vector is kept: rows of V outside B, projections of vectors
+// not supported on B and the expansion V q each cost one back-substitution
+// with the factorisation, and only the Galerkin zone correction (which
+// needs V^T K_z V of a multi-zone component) forms all of V, transiently.
+
+#ifndef fuzzycontact_reduction_reduced_component_h
+#define fuzzycontact_reduction_reduced_component_h
+
+#include <fuzzycontact/base/sparse_cholesky.h>
+#include <fuzzycontact/fe/component.h>
+#include <fuzzycontact/modal/modal_solver.h>
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace FuzzyContact
+{
+  /**
+   * The smallest number of modes of @p modes whose modal static solution of
+   * the load @p f has a relative error in the energy norm of at most
+   * @p tolerance: sqrt(1 - sum_j (phi_j^T f)^2 / lambda_j / (f^T K^{-1} f)),
+   * where @p static_solution = K^{-1} f. Throws if all the modes together
+   * do not reach it.
+   */
+  unsigned int
+  modes_for_static_error(const ModalBasis     &modes,
+                         const Vector<double> &f,
+                         const Vector<double> &static_solution,
+                         const double          tolerance,
+                         const std::string    &what);
+
+  /**
+   * The small matrices of one reduced component, all that the reduced
+   * contact problem needs.
+   */
+  struct ReducedComponentMatrices
+  {
+    /** K_r = V^T K V (k x k, symmetric positive definite). */
+    FullMatrix<double> stiffness;
+    /** C_r = C_c V (rows of the contact interface x k). */
+    FullMatrix<double> gap_operator;
+    /**
+     * f_r,l = V^T f_l for every load l of the component, at its reference
+     * force (Component::reference_load_force()).
+     */
+    std::vector<Vector<double>> loads;
+    /** The reference force [N] of each load. */
+    std::vector<double> reference_forces;
+    /** DoFs whose displacements the solvers report, and V's rows there. */
+    std::vector<types::global_dof_index> observed_dofs;
+    FullMatrix<double>                   observation;
+  };
+
+  /**
+   * The reduction basis V of one component, modes with or without static
+   * correction (see the top of this file).
+   */
+  class ReducedComponent
+  {
+  public:
+    /**
+     * @p modes: M-normalised modes of @p component (all of them are used;
+     * with the static correction there may be none);
+     * @p factorisation: the Cholesky factorisation of the component's
+     * current stiffness, with at least the @p attachment_dofs and the DoFs
+     * of its loads ordered last (ContactScene::stiffness_factorisation());
+     * @p attachment_dofs: the DoFs of the static correction (ignored
+     * without it). The component's current stiffness is the nominal one.
+     */
+    ReducedComponent(
+      const Component                            &component,
+      const ModalBasis                           &modes,
+      std::shared_ptr<const SparseCholesky>       factorisation,
+      const std::vector<types::global_dof_index> &attachment_dofs,
+      const bool                                  static_correction,
+      const double                                rank_tolerance = 1e-12);
+
+    unsigned int
+    n_modes() const;
+    unsigned int
+    n_corrections() const;
+    /** k = n_modes() + n_corrections(). */
+    unsigned int
+    size() const;
+    bool
+    has_static_correction() const;
+
+    /** K_r = V^T K V at the nominal stiffness. */
+    const FullMatrix<double> &
+    stiffness() const;
+    /**
+     * V^T K_z V for every zone z of the component. For a single-zone
+     * component K = E K_z, so this is K_r / E; otherwise it is computed
+     * from the whole basis (one back-substitution per basis vector).
+     */
+    std::vector<FullMatrix<double>>
+    zone_stiffnesses() const;
+    /** V^T f. */
+    Vector<double>
+    project(const Vector<double> &f) const;
+    /** C V for a sparse C acting on this component's DoFs. */
+    FullMatrix<double>
+    project_rows(const SparseMatrix<double> &C) const;
+    /** The rows of V at @p dofs. */
+    FullMatrix<double>
+    rows(const std::vector<types::global_dof_index> &dofs) const;
+    /** u = V q. */
+    void
+    expand(const Vector<double> &q, Vector<double> &u) const;
+
+    /**
+     * The reduced matrices of this component for the gap operator block
+     * @p gap_operator (C_c of the contact interface), observing
+     * @p observed_dofs.
+     */
+    ReducedComponentMatrices
+    matrices(const SparseMatrix<double>                 &gap_operator,
+             const std::vector<types::global_dof_index> &observed_dofs) const;
+
+  private:
+    // Forms the static correction on B: R, X and the correction columns of
+    // V_B.
+    void
+    build_static_correction(
+      const std::vector<types::global_dof_index> &attachment_dofs,
+      const double                                rank_tolerance);
+    // E^T x for a full-length x (E's columns are supported on B).
+    Vector<double>
+    attachment_loads(const Vector<double> &x) const;
+    // The static correction part of a row of V, from its raw row
+    // Psi_raw^T e_d = E^T K^{-1} e_d and its modal row.
+    void
+    correction_row(const Vector<double> &raw,
+                   const Vector<double> &modal,
+                   Vector<double>       &row) const;
+
+    const Component                      &component;
+    const ModalBasis                     &modes;
+    std::shared_ptr<const SparseCholesky> factorisation;
+    // B (the factorisation's trailing DoFs) and each DoF's place in it (-1
+    // outside).
+    std::vector<types::global_dof_index> boundary;
+    std::vector<int>                     position;
+    FullMatrix<double>                   lambda; // Phi^T K Phi
+    // The static correction: E_B (unit columns at the attachment DoFs, then
+    // the loads), R = Lambda^{-1} Phi^T E, X, and the basis at B.
+    FullMatrix<double> E_B, R, X;
+    FullMatrix<double> V_B;
+    FullMatrix<double> K_r;
+  };
+} // namespace FuzzyContact
+
+#endif
