@@ -252,7 +252,7 @@ namespace FuzzyContact
                 B.set(i, n + c, v);
                 B.set(n + c, i, v);
               }
-        auto solver = std::make_unique<SparseDirectUMFPACK>();
+        auto solver = std::make_unique<SparseDirectSolver>();
         try
           {
             solver->factorize(B);

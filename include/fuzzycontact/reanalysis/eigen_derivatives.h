@@ -26,8 +26,9 @@
 // l0 M_k) phi0, c = 1/2 phi0^T M_k phi0; second derivatives are
 // d2/dt_k dt_l = (1 + delta_kl) phi_{e_k + e_l}. The bordered matrix is
 // symmetric, indefinite and sparse (one extra dense row and column); it is
-// factorised once per mode by UMFPACK and reused for every parameter, every
-// order and every direction.
+// factorised once per mode by UMFPACK (plain back-substitutions, no
+// iterative refinement: SparseDirectSolver) and reused for every parameter,
+// every order and every direction.
 //
 // Close or repeated eigenvalues. The bordered matrix is singular when
 // lambda_0 is repeated and ill-conditioned when it is close to another
@@ -62,11 +63,11 @@
 #ifndef fuzzycontact_reanalysis_eigen_derivatives_h
 #define fuzzycontact_reanalysis_eigen_derivatives_h
 
+#include <fuzzycontact/base/sparse_direct_solver.h>
 #include <fuzzycontact/modal/modal_solver.h>
 #include <fuzzycontact/reanalysis/reanalysis_parameters.h>
 
 #include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
@@ -232,12 +233,12 @@ namespace FuzzyContact
           std::vector<double>       &mu) const;
 
   private:
-    const ParameterModel                             &model;
-    const ModalBasis                                 &nominal;
-    std::vector<unsigned int>                         cluster_;
-    std::vector<Vector<double>>                       M0_phi;
-    std::vector<double>                               border_scale;
-    std::vector<std::unique_ptr<SparseDirectUMFPACK>> factorisations;
+    const ParameterModel                            &model;
+    const ModalBasis                                &nominal;
+    std::vector<unsigned int>                        cluster_;
+    std::vector<Vector<double>>                      M0_phi;
+    std::vector<double>                              border_scale;
+    std::vector<std::unique_ptr<SparseDirectSolver>> factorisations;
   };
 
 
