@@ -3,6 +3,7 @@
 // against an independent value.
 
 #include <fuzzycontact/base/input.h>
+#include <fuzzycontact/base/progress.h>
 #include <fuzzycontact/base/sparse_cholesky.h>
 #include <fuzzycontact/base/sparse_direct_solver.h>
 #include <fuzzycontact/fe/beam_theory.h>
@@ -802,4 +803,24 @@ TEST(Output, FilesAppearOnlyWhenWrittenAndWhole)
   for (const auto &entry : fs::recursive_directory_iterator(where))
     EXPECT_EQ(entry.path().string().find(".tmp-"), std::string::npos);
   fs::remove_all(where);
+}
+
+
+// ----------------------------------------------------------------------------
+// Progress lines
+// ----------------------------------------------------------------------------
+
+// The remaining time is the elapsed time per step times the steps left;
+// "quiet" prints nothing, whatever standard error is.
+TEST(Progress, LineEstimatesTheRemainingTimeAndQuietIsSilent)
+{
+  EXPECT_EQ(ProgressLines::line("samples", 160, 640, 2.0),
+            "  ... samples: 160/640 (25 %), 2.0 s elapsed, about 6.0 s left");
+  EXPECT_EQ(ProgressLines::line("samples", 640, 640, 12.4),
+            "  ... samples: 640/640 (100 %), 12 s elapsed");
+  ProgressLines::set_verbosity(ProgressLines::Verbosity::quiet);
+  EXPECT_FALSE(ProgressLines::enabled());
+  ProgressLines::set_verbosity(ProgressLines::Verbosity::progress);
+  EXPECT_TRUE(ProgressLines::enabled());
+  ProgressLines::set_verbosity(ProgressLines::Verbosity::automatic);
 }

@@ -576,6 +576,29 @@ TEST(FuzzyContactModel, ReducedMatchesFullOrderForTheDefaultStudy)
   EXPECT_EQ(model.reanalysis_orders(), (std::vector<unsigned int>{0, 0}));
 }
 
+// Moduli of whole bodies and loads only: the study needs no modes (the
+// static correction alone is exact), skips the modal analysis and says so;
+// with the modes forced the answers are the same to the solver accuracy.
+TEST(FuzzyContactModel, SkipsTheModesWhenTheStaticCorrectionIsExact)
+{
+  const Scene             scene = Scene::read(source_dir + "/prm/overlap.prm");
+  const FuzzyParameterSet set   = fuzzy_parameters(scene, default_study);
+  FuzzyContactModelSettings settings = coarse_settings();
+  FuzzyContactModel         without(scene, set, default_outputs, settings);
+  settings.modes_when_needed = false;
+  FuzzyContactModel with(scene, set, default_outputs, settings);
+  EXPECT_NE(without.skipped().find("no modal analysis"), std::string::npos);
+  EXPECT_NE(without.describe().find("no modes"), std::string::npos);
+  EXPECT_TRUE(with.skipped().empty());
+  EXPECT_EQ(with.describe().find("no modes"), std::string::npos);
+  for (const auto &p : corners_and_centre(set))
+    {
+      const auto f = without.full_order(p);
+      EXPECT_LT(largest_difference(without.reduced(p), f), 1e-7);
+      EXPECT_LT(largest_difference(with.reduced(p), f), 1e-7);
+    }
+}
+
 // Zone moduli change the mode shapes: the modes are re-analysed by HPTP and
 // the static correction modes stay nominal, so the reduced answer is
 // approximate away from the nominal point; at the nominal point it is exact.
@@ -612,6 +635,7 @@ end
       EXPECT_EQ(model.reanalysis_orders()[1], 0u);
       EXPECT_NE(model.describe().find("parameter-independent HPTP"),
                 std::string::npos);
+      EXPECT_TRUE(model.skipped().empty());
 
       // exact at the nominal point
       EXPECT_LT(largest_difference(model.reduced(centre),

@@ -35,6 +35,7 @@
 
 #include <fuzzycontact/base/input.h>
 #include <fuzzycontact/base/program.h>
+#include <fuzzycontact/base/progress.h>
 #include <fuzzycontact/fuzzy/extension_principle.h>
 #include <fuzzycontact/fuzzy/fuzzy_number.h>
 #include <fuzzycontact/fuzzy/fuzzy_parameters.h>
@@ -123,7 +124,7 @@ namespace Step4
                         "this many equally spaced values per parameter "
                         "(both ends included).");
       prm.declare_entry("reuse factorisations",
-                        "false",
+                        "true",
                         Patterns::Bool(),
                         "false: every sample is an independent full-order "
                         "analysis (new factorisations, refined displacement "
@@ -133,6 +134,7 @@ namespace Step4
                         "exact (stiffness a multiple of the nominal one): "
                         "the same answers to about 1e-9, much cheaper.");
       prm.leave_subsection();
+      ProgressLines::declare_parameters(prm);
       fuzzy.declare_parameters(prm);
       FuzzyContactModelSettings::declare_parameters(prm);
       OptimisationSettings::declare_parameters(prm);
@@ -162,6 +164,7 @@ namespace Step4
       prm.leave_subsection();
       model.parse_parameters(prm);
       optimisation.parse_parameters(prm);
+      ProgressLines::parse_parameters(prm);
 
       scene = Scene::read(scene_file);
       fuzzy.parse_parameters(prm, scene);
@@ -272,8 +275,13 @@ namespace Step4
     const Response                 reduced = [&](const std::vector<double> &p) {
       return model->reduced(p);
     };
-    const Response exact = [&](const std::vector<double> &p) {
-      return model->full_order(p);
+    // The reference's samples are counted for the progress lines.
+    std::unique_ptr<Progress> progress;
+    const Response            exact = [&](const std::vector<double> &p) {
+      std::vector<double> values = model->full_order(p);
+      if (progress)
+        progress->advance();
+      return values;
     };
     // Every method through the IntervalMethod interface, timed.
     const auto bounds = [&](const IntervalMethod &method,
@@ -307,11 +315,21 @@ namespace Step4
           (parameters.reuse_factorisations ? "factorisations reused where exact"
                                            : "independent analyses") +
           ")\n");
+        const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+        progress                   = std::make_unique<Progress>(
+          "Extension Principle, full-order solves" +
+            std::string(n_ranks > 1 ? " of the first rank" : ""),
+          (extension_principle_size(numbers,
+                                    results.alpha,
+                                    parameters.points_per_dimension) +
+           n_ranks - 1) /
+            n_ranks);
         results.reference =
           bounds(ExtensionPrinciple(parameters.points_per_dimension),
                  exact,
                  "extension principle (full order)");
-        results.has_reference = true;
+        results.has_reference    = true;
+        results.reference_reuses = parameters.reuse_factorisations;
       }
   }
 

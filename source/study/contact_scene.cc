@@ -1,3 +1,4 @@
+#include <fuzzycontact/base/progress.h>
 #include <fuzzycontact/study/contact_scene.h>
 
 #include <deal.II/base/exceptions.h>
@@ -131,6 +132,9 @@ namespace FuzzyContact
                                  "Component " + owned[c]->name() +
                                    ": the stiffness matrix");
         factorisations[c] = std::move(factorisation);
+        ProgressLines::stage("stiffness of " + owned[c]->name() + " factorised",
+                             c + 1,
+                             owned.size());
       }
     return factorisations[c];
   }

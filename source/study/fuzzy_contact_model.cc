@@ -32,6 +32,15 @@ namespace FuzzyContact
                       "project the stiffness onto [re-analysed modes, static "
                       "correction modes] ('galerkin', more accurate, a dense "
                       "factorisation per evaluation).");
+    prm.declare_entry("modes",
+                      "when needed",
+                      Patterns::Selection("when needed|always"),
+                      "'when needed': no modal analysis when the static "
+                      "correction is on and every fuzzy parameter only "
+                      "scales a body's stiffness (P1.E) or a load, or is a "
+                      "friction coefficient or a gap: the static correction "
+                      "alone is then exact. 'always': compute the modes "
+                      "anyway (the paper's reduced basis).");
     prm.leave_subsection();
     ModalParameters::declare_parameters(prm);
     ReanalysisSettings::declare_parameters(prm);
@@ -49,6 +58,7 @@ namespace FuzzyContact
       prm.get("zone correction") == "galerkin"
         ? ReducedModelSettings::ZoneCorrection::galerkin
         : ReducedModelSettings::ZoneCorrection::residual_flexibility;
+    modes_when_needed = (prm.get("modes") == "when needed");
     prm.leave_subsection();
     modal.parse_parameters(prm);
     AssertThrow(modal.cutoff_frequency == 0,
@@ -81,17 +91,53 @@ namespace FuzzyContact
     std::vector<VaryingQuantity> varying;
     for (const FuzzyParameter &p : fuzzy.parameters())
       varying.push_back({p.quantity, p.number.alpha_cut(0)});
-    reduced_model = std::make_unique<ReducedOrderModel>(
-      *bodies,
-      component_modes(*bodies, settings.modal, timer),
-      outputs->dofs(),
-      varying,
-      settings.reduced,
-      timer);
+    reduced_model =
+      std::make_unique<ReducedOrderModel>(*bodies,
+                                          modes_for(varying, settings, timer),
+                                          outputs->dofs(),
+                                          varying,
+                                          settings.reduced,
+                                          timer);
     reduced_model->set_contact_solver(std::make_unique<FL2CSolver>(
                                         settings.fl2c),
                                       "FL2C");
     full_model = std::make_unique<FullOrderModel>(*bodies, outputs->dofs());
+  }
+
+
+  std::vector<ModalBasis>
+  FuzzyContactModel::modes_for(const std::vector<VaryingQuantity> &varying,
+                               const FuzzyContactModelSettings    &settings,
+                               TimerOutput                        *timer)
+  {
+    // Modes enrich the basis only for what the static correction does not
+    // span exactly: a zone's material (the modes are then re-analysed) or
+    // a study without static correction. A static answer does not depend
+    // on a density; a body's modulus scales its stiffness.
+    bool needed =
+      !settings.modes_when_needed || !settings.reduced.static_correction;
+    std::string names;
+    for (const VaryingQuantity &v : varying)
+      {
+        needed = needed || v.quantity.zone >= 0;
+        names += (names.empty() ? "" : ", ") + v.quantity.name;
+      }
+    if (needed)
+      return component_modes(*bodies, settings.modal, timer);
+    skipped_stages =
+      "no modal analysis: every fuzzy parameter (" + names +
+      ") scales a body's stiffness or a load, is a density (a static answer "
+      "does not depend on it), a friction coefficient or a gap, so the "
+      "static correction alone makes the reduced contact flexibility exact "
+      "(Reduced models/modes = always computes the modes anyway)";
+    return std::vector<ModalBasis>(bodies->n_components());
+  }
+
+
+  const std::string &
+  FuzzyContactModel::skipped() const
+  {
+    return skipped_stages;
   }
 
 
@@ -122,6 +168,15 @@ namespace FuzzyContact
   {
     reduced_model->set_state(state(values));
     return outputs->values(reduced_model->solve());
+  }
+
+
+  std::vector<double>
+  FuzzyContactModel::reduced(const std::vector<double> &values,
+                             const ContactSolver       &solver)
+  {
+    reduced_model->set_state(state(values));
+    return outputs->values(reduced_model->solve(solver));
   }
 
 
@@ -158,8 +213,10 @@ namespace FuzzyContact
   FuzzyContactModel::describe() const
   {
     std::ostringstream out;
-    out << reduced_model->describe()
-        << "  contact: " << bodies->interface().n_nodes() << " slave nodes in "
+    out << reduced_model->describe();
+    if (!skipped_stages.empty())
+      out << "  " << skipped_stages << "\n";
+    out << "  contact: " << bodies->interface().n_nodes() << " slave nodes in "
         << bodies->interface().n_pairs() << " contact pair(s)\n"
         << "  outputs:";
     for (unsigned int i = 0; i < outputs->size(); ++i)

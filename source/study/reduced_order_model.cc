@@ -1,3 +1,4 @@
+#include <fuzzycontact/base/progress.h>
 #include <fuzzycontact/contact/fl2c.h>
 #include <fuzzycontact/study/reduced_order_model.h>
 
@@ -125,6 +126,9 @@ namespace FuzzyContact
                                          component.mass_matrix(),
                                          what));
           }
+        ProgressLines::stage("modes of " + component.name() + " done",
+                             c + 1,
+                             bodies.n_components());
       }
     return modes;
   }
@@ -228,6 +232,10 @@ namespace FuzzyContact
           m.nominal_matrices =
             m.reduced->matrices(interface.gap_operator(c), observed[c]);
         }
+        ProgressLines::stage("static correction of " + component.name() +
+                               " done",
+                             c + 1,
+                             n_c);
         // Residual flexibility: the static correction modes' part of a
         // re-analysed component stays (set below as the fixed part); only
         // its modal part will change. At the nominal point the split is
@@ -591,10 +599,14 @@ namespace FuzzyContact
       {
         const ComponentModel &m = *models[c];
         out << "  " << bodies.component(c).name() << ": "
-            << bodies.component(c).n_dofs() << " DoFs, " << m.reduced->n_modes()
-            << " modes (" << std::setprecision(4) << m.modes.frequencies()[0]
-            << " to " << m.modes.frequencies().back() << " Hz) + "
-            << m.reduced->n_corrections() << " static correction modes; ";
+            << bodies.component(c).n_dofs() << " DoFs, ";
+        if (m.reduced->n_modes() == 0)
+          out << "no modes, ";
+        else
+          out << m.reduced->n_modes() << " modes (" << std::setprecision(4)
+              << m.modes.frequencies()[0] << " to "
+              << m.modes.frequencies().back() << " Hz) + ";
+        out << m.reduced->n_corrections() << " static correction modes; ";
         if (m.quantities.empty())
           out << "no fuzzy material";
         else

@@ -36,7 +36,9 @@ namespace FuzzyContact
     FuzzyOutputBounds vertex, reference;
     bool              has_vertex    = false;
     bool              has_reference = false;
-    double            offline_time  = 0;
+    /** The reference kept its factorisations (else independent analyses). */
+    bool   reference_reuses = false;
+    double offline_time     = 0;
   };
 
   namespace FuzzyStudyReport

@@ -48,10 +48,19 @@ namespace FuzzyContact
     ReducedModelSettings reduced;
     ModalParameters      modal;
     FL2CParameters       fl2c;
+    /**
+     * Compute modes only when the study needs them (false: always, e.g. to
+     * reproduce the paper's modal basis). They are not needed when the
+     * static correction is on and every fuzzy parameter only scales a
+     * body's stiffness or a load, or is a friction coefficient or a gap:
+     * the static correction alone is then exact.
+     */
+    bool modes_when_needed = true;
 
     /**
      * Declares "mesh refinements" and the subsections "Reduced models"
-     * (static correction, zone correction), "Modal analysis", "Reanalysis"
+     * (static correction, zone correction, modes), "Modal analysis",
+     * "Reanalysis"
      * and "FL2C".
      */
     static void
@@ -82,6 +91,13 @@ namespace FuzzyContact
     std::vector<double>
     reduced(const std::vector<double> &values);
 
+    /**
+     * The reduced model's answer at @p values with @p solver instead of
+     * FL2C (e.g. ActiveSetSolver, the exact reduced solution).
+     */
+    std::vector<double>
+    reduced(const std::vector<double> &values, const ContactSolver &solver);
+
     /** The exact answer at @p values. */
     std::vector<double>
     full_order(const std::vector<double> &values);
@@ -102,7 +118,20 @@ namespace FuzzyContact
     std::vector<unsigned int>
     reanalysis_orders() const;
 
+    /**
+     * What the model left out and why (empty if nothing), for the report.
+     */
+    const std::string &
+    skipped() const;
+
   private:
+    // The modes of every component, or empty bases when the study does not
+    // need them (says why in skipped_stages).
+    std::vector<ModalBasis>
+    modes_for(const std::vector<VaryingQuantity> &varying,
+              const FuzzyContactModelSettings    &settings,
+              TimerOutput                        *timer);
+
     // The state of the scene at @p values.
     SceneState
     state(const std::vector<double> &values) const;
@@ -113,6 +142,7 @@ namespace FuzzyContact
     std::unique_ptr<Observations>      outputs;
     std::unique_ptr<ReducedOrderModel> reduced_model;
     std::unique_ptr<FullOrderModel>    full_model;
+    std::string                        skipped_stages;
   };
 } // namespace FuzzyContact
 
