@@ -3,6 +3,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 #include <vector>
@@ -107,7 +108,7 @@ namespace FuzzyContact
         const double wA = (i < n_terms ? strengths[i] : 0.);
         if (wD == 0 && wA == 0)
           continue;
-        std::vector<double> ts = {0., 1., 1 - wD, wA, 0.5, 1 - wA, wD};
+        std::array<double, 7> ts = {{0., 1., 1 - wD, wA, 0.5, 1 - wA, wD}};
         std::sort(ts.begin(), ts.end());
         const auto f = [&](const double t) {
           return std::max(std::min(wD, 1 - t), std::min(wA, t));
