@@ -371,7 +371,7 @@ main(int argc, char **argv)
     {
       say("# contact_benchmark" + std::string(quick ? " (quick)" : "") +
           "\n\nTimes are wall times of one run on this machine (2 cores "
-          "shared, Release, reference BLAS); they vary by about 30 % between "
+          "shared, Release, OpenBLAS serial); they vary by about 30 % between "
           "runs. Errors are relative to the full-order answer of the same "
           "mesh.\n");
       part_a(prm, quick);

@@ -16,8 +16,9 @@
 //     reference of independent analyses: run where it takes under about a
 //     minute, otherwise estimated as (number of samples) x (cold solve),
 //     and said so;
-//   - the peak resident memory of the process after each size (the sizes
-//     grow, so it is the largest size's peak).
+//   - the peak resident memory of the process after the fast study and
+//     after the references of each size (the sizes grow, so it is the
+//     largest size's peak; the zone study at 20k comes before 80k).
 //
 // Usage (from the repository's top folder):
 //   build/study_benchmark [prm folder] [largest refinement, default 3]
@@ -147,7 +148,7 @@ end
     double        fast = 0, fast_error = 0, reusing = 0, independent = 0;
     bool          independent_run = false;
     unsigned long samples = 0, evaluations = 0;
-    double        memory = 0;
+    double        memory = 0, fast_memory = 0;
   };
 
   Row
@@ -184,6 +185,7 @@ end
                                                                MPI_COMM_WORLD);
     row.fast                     = row.offline + fast.wall_time;
     row.evaluations              = fast.n_evaluations;
+    row.fast_memory              = peak_memory_gb();
 
     const auto            points = random_points(set, 41, refinements);
     const ActiveSetSolver active_set;
@@ -232,9 +234,10 @@ end
         << Format::scientific(r.fast_error, 1) << " | " << fixed(r.reusing, 2)
         << " | " << fixed(r.independent, 1)
         << (r.independent_run ? "" : " (est.)") << " | "
+        << fixed(r.cold * r.samples, 1) << " | "
         << fixed(r.independent / r.fast, 0) << "x | "
-        << fixed(r.reusing / r.fast, 2) << "x | " << fixed(r.memory, 2)
-        << " |\n";
+        << fixed(r.reusing / r.fast, 2) << "x | " << fixed(r.fast_memory, 2)
+        << " | " << fixed(r.memory, 2) << " |\n";
     report.say(out.str());
   }
 
@@ -243,22 +246,26 @@ end
   {
     std::ostringstream dat;
     dat << "# dofs cold offline online_fl2c online_exact fast reusing "
-           "independent memory_gb\n";
+           "independent memory_gb fast_memory_gb\n";
     for (const Row &r : rows)
       if (r.study == "default")
         dat << r.dofs << " " << r.cold << " " << r.offline << " "
             << r.online_fl2c << " " << r.online_exact << " " << r.fast << " "
-            << r.reusing << " " << r.independent << " " << r.memory << "\n";
+            << r.reusing << " " << r.independent << " " << r.memory << " "
+            << r.fast_memory << "\n";
     write_file_atomically("study_benchmark.dat", dat.str());
-    const std::string script = R"gp(set terminal pngcairo size 900,560 font ",11"
+    const std::string script =
+      R"gp(set terminal pngcairo enhanced size 900,640 font ",11"
 set output "study_benchmark.png"
 set logscale xy
+set format y "10^{%L}"
+set format y2 "%g"
 set xlabel "DoFs per body"
 set ylabel "wall time [s]"
 set y2label "peak memory [GB]"
 set y2tics
 set logscale y2
-set key outside right
+set key below maxrows 3 width -4
 set grid
 plot "study_benchmark.dat" u 1:2 w lp t "one cold full-order solve", \
      "" u 1:3 w lp t "offline build", \
@@ -267,7 +274,8 @@ plot "study_benchmark.dat" u 1:2 w lp t "one cold full-order solve", \
      "" u 1:6 w lp lw 2 t "fast study", \
      "" u 1:7 w lp t "reference, reused factorisations", \
      "" u 1:8 w lp t "reference, independent analyses", \
-     "" u 1:9 axes x1y2 w lp dt 2 t "peak memory (right axis)"
+     "" u 1:10 axes x1y2 w lp dt 2 t "peak memory, fast study (right)", \
+     "" u 1:9 axes x1y2 w lp dt 3 t "peak memory, with references (right)"
 )gp";
     write_file_atomically("study_benchmark.gp", script);
     if (std::system("gnuplot study_benchmark.gp") != 0)
@@ -293,9 +301,10 @@ main(int argc, char **argv)
         "reference estimated as samples x cold solve (not run).\n\n"
         "| study | DoFs/body | cold solve [s] | offline [s] | eval FL2C "
         "[us] | eval exact [us] | fast study [s] | bound error | reference "
-        "reusing [s] | reference independent [s] | speed-up vs independent "
-        "| reusing / fast | peak memory [GB] |\n"
-        "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+        "reusing [s] | reference independent [s] | samples x cold solve [s] "
+        "| speed-up vs independent | reusing / fast | peak memory, fast "
+        "study [GB] | peak memory, with references [GB] |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
       std::vector<Row> rows;
       for (unsigned int r = 1; r <= largest; ++r)
         {
