@@ -1,6 +1,7 @@
 # Runs a step program once alone and once behind MPI_LAUNCHER (e.g.
 # mpiexec -n 2), through run_program.cmake, and checks that every bound in
-# results.json is the same number in both runs.
+# results.json is the same number in both runs, and that the second run
+# spread the components' builds over its ranks.
 set(base "${WORKDIR}")
 set(EXPECT success)
 
@@ -30,3 +31,11 @@ foreach(k RANGE ${last})
   endforeach()
 endforeach()
 message(STATUS "all bounds identical with 1 and 2 processes")
+
+# The two ranks built one component each (their reduced blocks exchanged).
+file(READ "${base}/np2/${OUTPUT}/report.txt" report)
+string(FIND "${report}" "built on 2 MPI ranks" spread)
+if(spread EQUAL -1)
+  message(FATAL_ERROR "the 2-process run did not spread the components' "
+                      "builds over the ranks (report.txt)")
+endif()

@@ -250,7 +250,8 @@ namespace Step4
                                                 parameters.fuzzy,
                                                 parameters.outputs,
                                                 parameters.model,
-                                                &timer);
+                                                &timer,
+                                                comm);
     results.offline_time = Utilities::MPI::max(wall.wall_time(), comm);
     results.n_dofs       = model->n_dofs();
     for (unsigned int k = 0; k < model->observations().size(); ++k)

@@ -74,7 +74,8 @@ namespace FuzzyContact
     const FuzzyParameterSet         &fuzzy,
     const std::vector<std::string>  &output_names,
     const FuzzyContactModelSettings &settings,
-    TimerOutput                     *timer)
+    TimerOutput                     *timer,
+    const MPI_Comm                   comm)
       : scene(scene_)
       , fuzzy(fuzzy)
   {
@@ -91,13 +92,16 @@ namespace FuzzyContact
     std::vector<VaryingQuantity> varying;
     for (const FuzzyParameter &p : fuzzy.parameters())
       varying.push_back({p.quantity, p.number.alpha_cut(0)});
-    reduced_model =
-      std::make_unique<ReducedOrderModel>(*bodies,
-                                          modes_for(varying, settings, timer),
-                                          outputs->dofs(),
-                                          varying,
-                                          settings.reduced,
-                                          timer);
+    reduced_model = std::make_unique<ReducedOrderModel>(
+      *bodies,
+      modes_for(varying, settings, timer, comm),
+      outputs->dofs(),
+      varying,
+      settings.reduced,
+      timer,
+      comm);
+    if (ReducedOrderModel::spreads_components(varying, comm))
+      n_ranks_building = Utilities::MPI::n_mpi_processes(comm);
     reduced_model->set_contact_solver(std::make_unique<FL2CSolver>(
                                         settings.fl2c),
                                       "FL2C");
@@ -108,7 +112,8 @@ namespace FuzzyContact
   std::vector<ModalBasis>
   FuzzyContactModel::modes_for(const std::vector<VaryingQuantity> &varying,
                                const FuzzyContactModelSettings    &settings,
-                               TimerOutput                        *timer)
+                               TimerOutput                        *timer,
+                               const MPI_Comm                      comm)
   {
     // Modes enrich the basis only for what the static correction does not
     // span exactly: a zone's material (the modes are then re-analysed) or
@@ -123,7 +128,16 @@ namespace FuzzyContact
         names += (names.empty() ? "" : ", ") + v.quantity.name;
       }
     if (needed)
-      return component_modes(*bodies, settings.modal, timer);
+      {
+        // Where the components are spread over the ranks, each computes the
+        // modes of its own components only.
+        std::vector<bool> owned;
+        if (ReducedOrderModel::spreads_components(varying, comm))
+          for (unsigned int c = 0; c < bodies->n_components(); ++c)
+            owned.push_back(c % Utilities::MPI::n_mpi_processes(comm) ==
+                            Utilities::MPI::this_mpi_process(comm));
+        return component_modes(*bodies, settings.modal, timer, owned);
+      }
     skipped_stages =
       "no modal analysis: every fuzzy parameter (" + names +
       ") scales a body's stiffness or a load, is a density (a static answer "
@@ -216,6 +230,10 @@ namespace FuzzyContact
     out << reduced_model->describe();
     if (!skipped_stages.empty())
       out << "  " << skipped_stages << "\n";
+    if (n_ranks_building > 1)
+      out << "  the components' reduced models were built on "
+          << n_ranks_building << " MPI ranks (component c on rank c mod "
+          << n_ranks_building << "), their reduced blocks exchanged\n";
     out << "  contact: " << bodies->interface().n_nodes() << " slave nodes in "
         << bodies->interface().n_pairs() << " contact pair(s)\n"
         << "  outputs:";

@@ -80,8 +80,11 @@ namespace FuzzyContact
     std::vector<SceneQuantity> quantities; // its varying material quantities
     std::vector<double>        nominal_moduli, nominal_densities;
 
-    ModalBasis                        modes;
+    ModalBasis modes;
+    // The basis (on the rank that built it: every rank unless the
+    // components are spread over the ranks) and its sizes (on every rank).
     std::unique_ptr<ReducedComponent> reduced;
+    unsigned int                      n_modes = 0, n_corrections = 0;
     ReducedComponentMatrices          nominal_matrices;
     // The static correction enters as a fixed residual flexibility.
     bool split = false;
@@ -98,9 +101,10 @@ namespace FuzzyContact
 
 
   std::vector<ModalBasis>
-  component_modes(const ContactScene    &bodies,
-                  const ModalParameters &parameters,
-                  TimerOutput           *timer)
+  component_modes(const ContactScene      &bodies,
+                  const ModalParameters   &parameters,
+                  TimerOutput             *timer,
+                  const std::vector<bool> &owned)
   {
     // At shift 0, ARPACK works on the factorisation of K that the static
     // correction uses too.
@@ -110,6 +114,11 @@ namespace FuzzyContact
       {
         const Component  &component = bodies.component(c);
         const std::string what      = "Component " + component.name();
+        if (!owned.empty() && !owned[c])
+          {
+            modes.emplace_back(); // built on another rank
+            continue;
+          }
         if (parameters.shift == 0)
           {
             const auto factorisation = bodies.stiffness_factorisation(c, timer);
@@ -173,7 +182,8 @@ namespace FuzzyContact
     const ObservedDofs                 &observed,
     const std::vector<VaryingQuantity> &varying,
     const ReducedModelSettings         &settings,
-    TimerOutput                        *timer)
+    TimerOutput                        *timer,
+    const MPI_Comm                      comm)
       : bodies(bodies)
       , settings(settings)
       , solver(std::make_unique<FL2CSolver>())
@@ -211,31 +221,27 @@ namespace FuzzyContact
         models.push_back(std::move(m));
       }
 
+    // With several ranks, component c is built on rank c mod n and its
+    // reduced blocks are sent to all (unless a component is re-analysed).
+    const bool         spread = spreads_components(varying, comm);
+    const unsigned int n_ranks =
+      spread ? Utilities::MPI::n_mpi_processes(comm) : 1;
+    const unsigned int rank =
+      spread ? Utilities::MPI::this_mpi_process(comm) : 0;
+    for (unsigned int c = 0; c < n_c; ++c)
+      if (!spread || c % n_ranks == rank)
+        build_component(*models[c], c, observed[c], timer);
+    if (spread)
+      {
+        auto scope = time(timer, "reduced blocks exchanged (MPI)");
+        for (unsigned int c = 0; c < n_c; ++c)
+          exchange_component(*models[c], c % n_ranks, comm);
+      }
+
     std::vector<ReducedComponentMatrices> nominal;
     for (unsigned int c = 0; c < n_c; ++c)
       {
-        ComponentModel  &m         = *models[c];
-        const Component &component = bodies.component(c);
-        {
-          const auto factorisation = bodies.stiffness_factorisation(c, timer);
-          auto       scope         = time(timer, "static correction modes");
-          m.reduced =
-            std::make_unique<ReducedComponent>(component,
-                                               m.modes,
-                                               factorisation,
-                                               interface.contact_dofs(c),
-                                               settings.static_correction,
-                                               settings.rank_tolerance);
-        }
-        {
-          auto scope = time(timer, "reduced matrices");
-          m.nominal_matrices =
-            m.reduced->matrices(interface.gap_operator(c), observed[c]);
-        }
-        ProgressLines::stage("static correction of " + component.name() +
-                               " done",
-                             c + 1,
-                             n_c);
+        ComponentModel &m = *models[c];
         // Residual flexibility: the static correction modes' part of a
         // re-analysed component stays (set below as the fixed part); only
         // its modal part will change. At the nominal point the split is
@@ -245,10 +251,9 @@ namespace FuzzyContact
           m.hptp &&
           settings.zone_correction ==
             ReducedModelSettings::ZoneCorrection::residual_flexibility &&
-          m.reduced->n_corrections() > 0;
-        nominal.push_back(
-          m.split ? columns(m.nominal_matrices, 0, m.reduced->n_modes())
-                  : m.nominal_matrices);
+          m.n_corrections > 0;
+        nominal.push_back(m.split ? columns(m.nominal_matrices, 0, m.n_modes)
+                                  : m.nominal_matrices);
         if (m.hptp)
           build_reanalysis(m, c, varying, timer);
       }
@@ -262,8 +267,80 @@ namespace FuzzyContact
       if (models[c]->split)
         reduced->set_fixed_part(c,
                                 columns(models[c]->nominal_matrices,
-                                        models[c]->reduced->n_modes(),
-                                        models[c]->reduced->n_corrections()));
+                                        models[c]->n_modes,
+                                        models[c]->n_corrections));
+  }
+
+
+  bool
+  ReducedOrderModel::spreads_components(
+    const std::vector<VaryingQuantity> &varying,
+    const MPI_Comm                      comm)
+  {
+    // (MPI_COMM_SELF, or a program that did not initialise MPI)
+    if (!Utilities::MPI::job_supports_mpi() ||
+        Utilities::MPI::n_mpi_processes(comm) == 1)
+      return false;
+    for (const VaryingQuantity &v : varying)
+      if (v.quantity.is_material() && v.quantity.zone >= 0)
+        return false;
+    return true;
+  }
+
+
+  // The reduced basis of component c from the shared factorisation of its
+  // stiffness, and its nominal reduced matrices.
+  void
+  ReducedOrderModel::build_component(
+    ComponentModel                             &m,
+    const unsigned int                          c,
+    const std::vector<types::global_dof_index> &observed,
+    TimerOutput                                *timer)
+  {
+    const Component        &component = bodies.component(c);
+    const ContactInterface &interface = bodies.interface();
+    {
+      const auto factorisation = bodies.stiffness_factorisation(c, timer);
+      auto       scope         = time(timer, "static correction modes");
+      m.reduced                = std::make_unique<ReducedComponent>(component,
+                                                     m.modes,
+                                                     factorisation,
+                                                     interface.contact_dofs(c),
+                                                     settings.static_correction,
+                                                     settings.rank_tolerance);
+    }
+    {
+      auto scope = time(timer, "reduced matrices");
+      m.nominal_matrices =
+        m.reduced->matrices(interface.gap_operator(c), observed);
+    }
+    m.n_modes       = m.reduced->n_modes();
+    m.n_corrections = m.reduced->n_corrections();
+    ProgressLines::stage("static correction of " + component.name() + " done",
+                         c + 1,
+                         bodies.n_components());
+  }
+
+
+  // Sends what the other ranks need of a component built on rank @p owner:
+  // its reduced matrices, the sizes of its basis and its eigenvalues (for
+  // the description).
+  void
+  ReducedOrderModel::exchange_component(ComponentModel    &m,
+                                        const unsigned int owner,
+                                        const MPI_Comm     comm)
+  {
+    m.nominal_matrices =
+      Utilities::MPI::broadcast(comm, m.nominal_matrices, owner);
+    const std::vector<unsigned int> sizes =
+      Utilities::MPI::broadcast(comm,
+                                std::vector<unsigned int>{m.n_modes,
+                                                          m.n_corrections},
+                                owner);
+    m.n_modes       = sizes[0];
+    m.n_corrections = sizes[1];
+    m.modes.eigenvalues =
+      Utilities::MPI::broadcast(comm, m.modes.eigenvalues, owner);
   }
 
 
@@ -569,7 +646,7 @@ namespace FuzzyContact
   ReducedOrderModel::n_modes(const unsigned int c) const
   {
     AssertIndexRange(c, models.size());
-    return models[c]->reduced->n_modes();
+    return models[c]->n_modes;
   }
 
 
@@ -577,7 +654,7 @@ namespace FuzzyContact
   ReducedOrderModel::n_corrections(const unsigned int c) const
   {
     AssertIndexRange(c, models.size());
-    return models[c]->reduced->n_corrections();
+    return models[c]->n_corrections;
   }
 
 
@@ -600,13 +677,13 @@ namespace FuzzyContact
         const ComponentModel &m = *models[c];
         out << "  " << bodies.component(c).name() << ": "
             << bodies.component(c).n_dofs() << " DoFs, ";
-        if (m.reduced->n_modes() == 0)
+        if (m.n_modes == 0)
           out << "no modes, ";
         else
-          out << m.reduced->n_modes() << " modes (" << std::setprecision(4)
+          out << m.n_modes << " modes (" << std::setprecision(4)
               << m.modes.frequencies()[0] << " to "
               << m.modes.frequencies().back() << " Hz) + ";
-        out << m.reduced->n_corrections() << " static correction modes; ";
+        out << m.n_corrections << " static correction modes; ";
         if (m.quantities.empty())
           out << "no fuzzy material";
         else
@@ -638,6 +715,11 @@ namespace FuzzyContact
         AssertThrow(!models[c]->hptp,
                     ExcMessage("ReducedOrderModel: the displacement field of "
                                "a re-analysed component is not available."));
+        AssertThrow(models[c]->reduced != nullptr,
+                    ExcMessage("ReducedOrderModel: the basis of component " +
+                               bodies.component(c).name() +
+                               " was built on another MPI rank; its "
+                               "displacement field is not available here."));
         models[c]->reduced->expand(q[c], u[c]);
       }
     return u;

@@ -34,6 +34,8 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <boost/serialization/vector.hpp>
+
 #include <memory>
 #include <string>
 #include <vector>
@@ -74,6 +76,15 @@ namespace FuzzyContact
     /** DoFs whose displacements the solvers report, and V's rows there. */
     std::vector<types::global_dof_index> observed_dofs;
     FullMatrix<double>                   observation;
+
+    /** For Utilities::MPI::broadcast (the ranks exchange these blocks). */
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int)
+    {
+      archive &stiffness &gap_operator &loads &reference_forces &observed_dofs
+        &observation;
+    }
   };
 
   /**

@@ -81,7 +81,8 @@ namespace FuzzyContact
                       const FuzzyParameterSet         &fuzzy,
                       const std::vector<std::string>  &outputs,
                       const FuzzyContactModelSettings &settings,
-                      TimerOutput                     *timer = nullptr);
+                      TimerOutput                     *timer = nullptr,
+                      const MPI_Comm                   comm  = MPI_COMM_SELF);
 
     /** The outputs, in the order of the values returned. */
     const Observations &
@@ -130,7 +131,8 @@ namespace FuzzyContact
     std::vector<ModalBasis>
     modes_for(const std::vector<VaryingQuantity> &varying,
               const FuzzyContactModelSettings    &settings,
-              TimerOutput                        *timer);
+              TimerOutput                        *timer,
+              const MPI_Comm                      comm);
 
     // The state of the scene at @p values.
     SceneState
@@ -143,6 +145,7 @@ namespace FuzzyContact
     std::unique_ptr<ReducedOrderModel> reduced_model;
     std::unique_ptr<FullOrderModel>    full_model;
     std::string                        skipped_stages;
+    unsigned int                       n_ranks_building = 1;
   };
 } // namespace FuzzyContact
 

@@ -81,9 +81,10 @@ namespace FuzzyContact
    * materials ("modes (ARPACK)" in @p timer).
    */
   std::vector<ModalBasis>
-  component_modes(const ContactScene    &bodies,
-                  const ModalParameters &parameters,
-                  TimerOutput           *timer = nullptr);
+  component_modes(const ContactScene      &bodies,
+                  const ModalParameters   &parameters,
+                  TimerOutput             *timer = nullptr,
+                  const std::vector<bool> &owned = {});
 
   /**
    * Truncates each component's modes to the fewest whose modal static
@@ -115,8 +116,19 @@ namespace FuzzyContact
                       const ObservedDofs                 &observed,
                       const std::vector<VaryingQuantity> &varying,
                       const ReducedModelSettings         &settings,
-                      TimerOutput                        *timer = nullptr);
+                      TimerOutput                        *timer = nullptr,
+                      const MPI_Comm                      comm = MPI_COMM_SELF);
     ~ReducedOrderModel() override;
+
+    /**
+     * Whether the components' builds are spread over the ranks of the
+     * communicator (component c on rank c mod n, its reduced blocks sent
+     * to all): with several ranks, unless a component is re-analysed
+     * (zone parameters), which every rank then builds whole.
+     */
+    static bool
+    spreads_components(const std::vector<VaryingQuantity> &varying,
+                       const MPI_Comm                      comm);
 
     /** "reduced" and the solver's name, e.g. "reduced (fl2c)". */
     std::string
@@ -173,6 +185,15 @@ namespace FuzzyContact
                      TimerOutput                        *timer);
     ReducedComponentMatrices
     reanalysed_matrices(const ComponentModel &m, const SceneState &state) const;
+    void
+    build_component(ComponentModel                             &m,
+                    const unsigned int                          c,
+                    const std::vector<types::global_dof_index> &observed,
+                    TimerOutput                                *timer);
+    static void
+    exchange_component(ComponentModel    &m,
+                       const unsigned int owner,
+                       const MPI_Comm     comm);
 
     const ContactScene                          &bodies;
     ReducedModelSettings                         settings;
