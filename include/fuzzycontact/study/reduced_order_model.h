@@ -38,6 +38,7 @@
 #include <fuzzycontact/reanalysis/reanalysis_method.h>
 #include <fuzzycontact/reduction/reduced_model.h>
 #include <fuzzycontact/scene/scene_quantity.h>
+#include <fuzzycontact/study/component_modes.h>
 #include <fuzzycontact/study/contact_model.h>
 #include <fuzzycontact/study/contact_scene.h>
 
@@ -75,29 +76,6 @@ namespace FuzzyContact
     double             rank_tolerance = 1e-12;
     ReanalysisSettings reanalysis;
   };
-
-  /**
-   * The lowest modes of every component of @p bodies at their current
-   * materials ("modes (ARPACK)" in @p timer).
-   */
-  std::vector<ModalBasis>
-  component_modes(const ContactScene      &bodies,
-                  const ModalParameters   &parameters,
-                  TimerOutput             *timer = nullptr,
-                  const std::vector<bool> &owned = {});
-
-  /**
-   * Truncates each component's modes to the fewest whose modal static
-   * response to a unit normal force at slave node @p node (its part of the
-   * node's normal contact flexibility) has a relative energy error of at
-   * most @p tolerance (modes_for_static_error()); components the node does
-   * not touch keep theirs.
-   */
-  void
-  truncate_to_static_error(std::vector<ModalBasis> &modes,
-                           const ContactScene      &bodies,
-                           const unsigned int       node,
-                           const double             tolerance);
 
   class ReducedOrderModel : public ContactModel
   {
