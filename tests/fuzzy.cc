@@ -576,6 +576,28 @@ TEST(FuzzyContactModel, ReducedMatchesFullOrderForTheDefaultStudy)
   EXPECT_EQ(model.reanalysis_orders(), (std::vector<unsigned int>{0, 0}));
 }
 
+// A solver that fails at one point of the study says which point, which
+// model and which keys control it.
+TEST(FuzzyContactModel, AFailedEvaluationNamesThePointAndTheKeys)
+{
+  const Scene             scene = Scene::read(source_dir + "/prm/overlap.prm");
+  const FuzzyParameterSet set   = fuzzy_parameters(scene, default_study);
+  FuzzyContactModelSettings settings = coarse_settings();
+  settings.fl2c.max_iterations       = 1;
+  FuzzyContactModel model(scene, set, default_outputs, settings);
+  const std::string message = error_of([&]() {
+    model.reduced({2.1e11, 2.1e11, 5e4});
+  });
+  EXPECT_NE(message.find("At the parameter point P1.E = 2.1e+11, P2.E = "
+                         "2.1e+11, P1.tip.force = 50000, the reduced model "
+                         "(FL2C):"),
+            std::string::npos)
+    << message;
+  EXPECT_NE(message.find("did not converge in 1 iterations"), std::string::npos)
+    << message;
+  EXPECT_NE(message.find("subsection FL2C"), std::string::npos) << message;
+}
+
 // Moduli of whole bodies and loads only: the study needs no modes (the
 // static correction alone is exact), skips the modal analysis and says so;
 // with the modes forced the answers are the same to the solver accuracy.

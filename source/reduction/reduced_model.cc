@@ -26,8 +26,11 @@ namespace FuzzyContact
       AssertThrow(info == 0,
                   ExcMessage("ReducedContactModel: the reduced stiffness of a "
                              "component is not positive definite (LAPACK "
-                             "dpotrf, info " +
-                             std::to_string(info) + ")."));
+                             "dpotrf, pivot " +
+                             std::to_string(info) +
+                             "): a modulus or density orders of magnitude "
+                             "from the others (e.g. 'relative = false' with "
+                             "factor-like values) can cause this."));
       return L;
     }
 

@@ -180,8 +180,10 @@ namespace FuzzyContact
   std::vector<double>
   FuzzyContactModel::reduced(const std::vector<double> &values)
   {
-    reduced_model->set_state(state(values));
-    return outputs->values(reduced_model->solve());
+    return at_point(values, "the reduced model (FL2C)", [&]() {
+      reduced_model->set_state(state(values));
+      return outputs->values(reduced_model->solve());
+    });
   }
 
 
@@ -189,16 +191,52 @@ namespace FuzzyContact
   FuzzyContactModel::reduced(const std::vector<double> &values,
                              const ContactSolver       &solver)
   {
-    reduced_model->set_state(state(values));
-    return outputs->values(reduced_model->solve(solver));
+    return at_point(values, "the reduced model (" + solver.name() + ")", [&]() {
+      reduced_model->set_state(state(values));
+      return outputs->values(reduced_model->solve(solver));
+    });
   }
 
 
   std::vector<double>
   FuzzyContactModel::full_order(const std::vector<double> &values)
   {
-    full_model->set_state(state(values));
-    return outputs->values(full_model->solve());
+    return at_point(values, "the exact full-order reference", [&]() {
+      full_model->set_state(state(values));
+      return outputs->values(full_model->solve());
+    });
+  }
+
+
+  std::vector<double>
+  FuzzyContactModel::at_point(
+    const std::vector<double>                  &values,
+    const std::string                          &model,
+    const std::function<std::vector<double>()> &evaluate) const
+  {
+    try
+      {
+        return evaluate();
+      }
+    catch (const ExceptionBase &e)
+      {
+        // Which point of the study failed, and which keys control the
+        // solver that failed.
+        std::ostringstream point;
+        for (unsigned int i = 0; i < values.size(); ++i)
+          point << (i > 0 ? ", " : "") << fuzzy.parameters()[i].quantity.name
+                << " = " << values[i];
+        std::string message = "At the parameter point " + point.str() + ", " +
+                              model + ": " + Input::message_of(e);
+        if (model.find("FL2C") != std::string::npos)
+          message += " FL2C is set by the keys of subsection FL2C "
+                     "(tolerance, max iterations, calibration, gap/force/"
+                     "slip/friction points); a friction coefficient, "
+                     "modulus or load at the edge of its fuzzy support can "
+                     "also prevent its convergence.";
+        AssertThrow(false, ExcMessage(message));
+      }
+    return {};
   }
 
 

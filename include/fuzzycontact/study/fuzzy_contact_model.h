@@ -35,6 +35,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -133,6 +134,13 @@ namespace FuzzyContact
               const FuzzyContactModelSettings    &settings,
               TimerOutput                        *timer,
               const MPI_Comm                      comm);
+
+    // @p evaluate(), its failure rethrown with the parameter point and the
+    // @p model that failed.
+    std::vector<double>
+    at_point(const std::vector<double>                  &values,
+             const std::string                          &model,
+             const std::function<std::vector<double>()> &evaluate) const;
 
     // The state of the scene at @p values.
     SceneState
