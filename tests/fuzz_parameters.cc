@@ -35,6 +35,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -42,13 +43,11 @@
 #include <regex>
 #include <sstream>
 #include <string>
+#include <sys/wait.h>
 #include <thread>
 #include <tuple>
-#include <vector>
-
-#include <fcntl.h>
-#include <sys/wait.h>
 #include <unistd.h>
+#include <vector>
 
 namespace fs = std::filesystem;
 
@@ -61,8 +60,9 @@ namespace
   {
   public:
     explicit Random(const std::uint64_t seed)
-      : state(seed)
-    {}
+        : state(seed)
+    {
+    }
 
     std::uint64_t
     next()
@@ -192,28 +192,30 @@ namespace
 
   // Values that break naive parsers or physics.
   const std::vector<std::string> extreme_numbers = {
-    "0",     "-0",         "-1",         "1",           "2",
-    "3",     "0.5",        "1e308",      "-1e308",      "1e-300",
-    "1e200", "-1e-300",    "1e20",       "1e-20",       "1e9",
-    "1e-9",  "nan",        "inf",        "-inf",        "2147483647",
+    "0",          "-0",         "-1",          "1",
+    "2",          "3",          "0.5",         "1e308",
+    "-1e308",     "1e-300",     "1e200",       "-1e-300",
+    "1e20",       "1e-20",      "1e9",         "1e-9",
+    "nan",        "inf",        "-inf",        "2147483647",
     "2147483648", "4294967296", "-2147483649", "99999999999999999999",
-    "7",     "100",        "1000",       "1e6",         "0x10",
-    "1e",    "1.5",        "-0.5",       "0.4999999",   "1e-12"};
+    "7",          "100",        "1000",        "1e6",
+    "0x10",       "1e",         "1.5",         "-0.5",
+    "0.4999999",  "1e-12"};
 
   const std::vector<std::string> odd_texts = {
-    "",       " ",      "x",       "abc",    ",",      "1,",     ", 1",
-    "1;2",    "1 2",    "true",    "maybe",  "-",      "\"\"",   "#",
-    "é",      "P3",     "auto",    "scene",  "left",   "none",   "1, 1, 1"};
+    "",    " ",   "x",    "abc",   ",",    "1,",   ", 1",
+    "1;2", "1 2", "true", "maybe", "-",    "\"\"", "#",
+    "é",   "P3",  "auto", "scene", "left", "none", "1, 1, 1"};
 
   std::string
   mutate_number(const std::string &original, Random &random)
   {
     if (random.chance(0.6))
       return random.pick(extreme_numbers);
-    char       *end   = nullptr;
-    const double value = std::strtod(original.c_str(), &end);
-    const std::vector<double> factors = {
-      -1, 0, 10, 1e3, 1e6, 1e12, 1e-3, 1e-6, 1e-12, 2, 0.5};
+    char                     *end   = nullptr;
+    const double              value = std::strtod(original.c_str(), &end);
+    const std::vector<double> factors =
+      {-1, 0, 10, 1e3, 1e6, 1e12, 1e-3, 1e-6, 1e-12, 2, 0.5};
     std::ostringstream s;
     s.precision(17);
     s << value * random.pick(factors);
@@ -253,9 +255,9 @@ namespace
               items.push_back(" " + random.pick(extreme_numbers));
               break;
             default:
-              items[i] = " " + (looks_numeric(items[i]) ?
-                                  mutate_number(trim(items[i]), random) :
-                                  random.pick(odd_texts));
+              items[i] = " " + (looks_numeric(items[i])
+                                  ? mutate_number(trim(items[i]), random)
+                                  : random.pick(odd_texts));
           }
         return join(items, ",");
       }
@@ -285,7 +287,7 @@ namespace
           return "P3";
         default:
           {
-            std::string s = name;
+            std::string s             = name;
             s[random.below(s.size())] = ' ';
             return s;
           }
@@ -297,17 +299,17 @@ namespace
   std::string
   mutate(ParameterFile &file, Random &random)
   {
-    const std::vector<std::size_t> sets  = lines_matching(file, set_line);
-    const std::vector<std::size_t> subs  = lines_matching(file, subsection_line);
-    const std::vector<std::size_t> ends  = lines_matching(file, end_line);
-    const std::size_t              what  = random.below(100);
+    const std::vector<std::size_t> sets = lines_matching(file, set_line);
+    const std::vector<std::size_t> subs = lines_matching(file, subsection_line);
+    const std::vector<std::size_t> ends = lines_matching(file, end_line);
+    const std::size_t              what = random.below(100);
     const auto                     where = [&](const std::size_t line) {
       return file.name + ":" + std::to_string(line + 1) + " ";
     };
 
     if (what < 45 && !sets.empty())
       {
-        const std::size_t l = random.pick(sets);
+        const std::size_t l     = random.pick(sets);
         const auto        g     = groups(file.lines[l], set_line);
         const std::string value = mutate_value(g[4], random);
         file.lines[l]           = g[1] + g[2] + g[3] + value;
@@ -315,7 +317,7 @@ namespace
       }
     if (what < 55 && !sets.empty())
       {
-        const std::size_t l = random.pick(sets);
+        const std::size_t l       = random.pick(sets);
         const std::string removed = trim(file.lines[l]);
         file.lines.erase(file.lines.begin() + l);
         return where(l) + "deleted <" + removed + ">";
@@ -323,16 +325,16 @@ namespace
     if (what < 62 && !sets.empty())
       {
         const std::size_t l = random.pick(sets);
-        const auto        g    = groups(file.lines[l], set_line);
-        const std::string copy = g[1] + g[2] + g[3] +
-                                 (random.chance(0.5) ? g[4] :
-                                                       mutate_value(g[4], random));
+        const auto        g = groups(file.lines[l], set_line);
+        const std::string copy =
+          g[1] + g[2] + g[3] +
+          (random.chance(0.5) ? g[4] : mutate_value(g[4], random));
         file.lines.insert(file.lines.begin() + l + 1, copy);
         return where(l) + "key <" + g[2] + "> set twice";
       }
     if (what < 68 && !sets.empty())
       {
-        const std::size_t l = random.pick(sets);
+        const std::size_t l   = random.pick(sets);
         const auto        g   = groups(file.lines[l], set_line);
         const std::string key = mutate_name(g[2], random);
         file.lines[l]         = g[1] + key + g[3] + g[4];
@@ -341,7 +343,7 @@ namespace
     if (what < 78 && !subs.empty())
       {
         const std::size_t l = random.pick(subs);
-        const auto                     g     = groups(file.lines[l], subsection_line);
+        const auto        g = groups(file.lines[l], subsection_line);
         const std::vector<std::string> words = split(trim(g[2]), ' ');
         std::string                    name  = trim(g[2]);
         if (words.size() > 1 && random.chance(0.7))
@@ -366,7 +368,7 @@ namespace
       }
     if (what < 85 && !subs.empty())
       {
-        const std::size_t l = random.pick(subs);
+        const std::size_t l       = random.pick(subs);
         const std::string removed = trim(file.lines[l]);
         file.lines.erase(file.lines.begin() + l);
         return where(l) + "deleted <" + removed + ">";
@@ -403,14 +405,20 @@ namespace
       }
     if (!paths.empty())
       {
-        const std::size_t l = random.pick(paths);
-        const auto        g = groups(file.lines[l], set_line);
-        const std::vector<std::string> values = {
-          "/proc/no/such/folder", "", ".", "/", "scene.prm",
-          "deep/er/folder", "nowhere.prm", "..", "/dev/null",
-          "scene.prm/inside"};
-        const std::string path = random.pick(values);
-        file.lines[l]          = g[1] + g[2] + g[3] + path;
+        const std::size_t              l      = random.pick(paths);
+        const auto                     g      = groups(file.lines[l], set_line);
+        const std::vector<std::string> values = {"/proc/no/such/folder",
+                                                 "",
+                                                 ".",
+                                                 "/",
+                                                 "scene.prm",
+                                                 "deep/er/folder",
+                                                 "nowhere.prm",
+                                                 "..",
+                                                 "/dev/null",
+                                                 "scene.prm/inside"};
+        const std::string              path   = random.pick(values);
+        file.lines[l]                         = g[1] + g[2] + g[3] + path;
         return where(l) + "<" + trim(g[2]) + "> -> <" + path + ">";
       }
     return "no change";
@@ -480,16 +488,19 @@ namespace
   // Running a case.
   struct Run
   {
-    std::size_t              index;
-    std::string              program;
-    std::string              output;
-    std::vector<std::string> mutations;
-    fs::path                 folder;
-    pid_t                    pid = -1;
+    std::size_t                           index;
+    std::string                           program;
+    std::string                           output;
+    std::vector<std::string>              mutations;
+    fs::path                              folder;
+    pid_t                                 pid = -1;
     std::chrono::steady_clock::time_point start;
-    bool                     timed_out = false;
-    int                      status    = 0;
-    double                   seconds   = 0;
+    bool                                  timed_out = false;
+    // The output folder existed before the run (an input file or the
+    // case's own folder given as output directory).
+    bool   output_existed = false;
+    int    status         = 0;
+    double seconds        = 0;
   };
 
 
@@ -504,9 +515,11 @@ namespace
         ::setpgid(0, 0);
         if (::chdir(folder.c_str()) != 0)
           ::_exit(127);
-        const int out = ::open("stdout.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        const int err = ::open("stderr.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        const int in  = ::open("/dev/null", O_RDONLY);
+        const int out =
+          ::open("stdout.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        const int err =
+          ::open("stderr.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        const int in = ::open("/dev/null", O_RDONLY);
         ::dup2(in, 0);
         ::dup2(out, 1);
         ::dup2(err, 2);
@@ -555,16 +568,25 @@ namespace
       return "no '" + prefix + "' line on stderr";
     if (!other.empty())
       return "other text on stderr: " + other.front();
-    if (trim(message).size() < 15 || message.find("(none)") != std::string::npos)
+    if (trim(message).size() < 15 ||
+        message.find("(none)") != std::string::npos)
       return "empty or near-empty message";
-    static const std::regex mangled(R"([A-Za-z0-9]_(20|2e|2c|2d|28|29|3c|3e)[A-Za-z0-9])");
+    static const std::regex mangled(
+      R"([A-Za-z0-9]_(20|2e|2c|2d|28|29|3c|3e)[A-Za-z0-9])");
     if (std::regex_search(message, mangled))
       return "mangled name";
-    for (const char *generic :
-         {"std::bad_alloc", "unknown exception", "An error occurred in line",
-          "Stacktrace", "Additional information", "ExcInternalError",
-          "basic_string", "stoi", "stod", "vector::", "terminate called",
-          "Exc"})
+    for (const char *generic : {"std::bad_alloc",
+                                "unknown exception",
+                                "An error occurred in line",
+                                "Stacktrace",
+                                "Additional information",
+                                "ExcInternalError",
+                                "basic_string",
+                                "stoi",
+                                "stod",
+                                "vector::",
+                                "terminate called",
+                                "Exc"})
       if (message.find(generic) != std::string::npos)
         return std::string("generic text <") + generic + ">";
     if (message.find(".prm") == std::string::npos)
@@ -600,12 +622,12 @@ namespace
     if (run.output.empty() || run.output[0] == '/' ||
         output.string().rfind(run.folder.string() + "/", 0) != 0)
       output.clear();
-    const bool wrote =
-      !output.empty() && fs::exists(output / "results.json");
+    const bool wrote = !output.empty() && fs::exists(output / "results.json");
     if (run.timed_out)
       return {"hang", "still running after the time limit"};
     if (WIFSIGNALED(run.status))
-      return {"crash", std::string("signal ") + strsignal(WTERMSIG(run.status))};
+      return {"crash",
+              std::string("signal ") + strsignal(WTERMSIG(run.status))};
     const int code = WEXITSTATUS(run.status);
     if (err.find("On entry to") != std::string::npos ||
         out.find("On entry to") != std::string::npos)
@@ -629,7 +651,7 @@ namespace
       }
     if (code != 1)
       return {"crash", "exit status " + std::to_string(code)};
-    if (!output.empty() && fs::exists(output))
+    if (!output.empty() && !run.output_existed && fs::exists(output))
       return {"garbage", "a failed run wrote " + run.output + "/"};
     const std::string problem = message_problem(run.program, err);
     if (!problem.empty())
@@ -684,10 +706,11 @@ namespace
 
   // Writes the mutated files of case @p index into its folder.
   Run
-  prepare(const Options &options, const std::vector<BaseCase> &bases,
-          const std::size_t index)
+  prepare(const Options               &options,
+          const std::vector<BaseCase> &bases,
+          const std::size_t            index)
   {
-    Random random(options.seed * 1000003ULL + index);
+    Random   random(options.seed * 1000003ULL + index);
     BaseCase base = bases[index % bases.size()];
     Run      run;
     run.index   = index;
@@ -701,9 +724,9 @@ namespace
     for (std::size_t k = 0; k < n_mutations; ++k)
       {
         ParameterFile &target =
-          (base.scenes.empty() || random.chance(0.55)) ?
-            base.step_file :
-            base.scenes[random.below(base.scenes.size())];
+          (base.scenes.empty() || random.chance(0.55))
+            ? base.step_file
+            : base.scenes[random.below(base.scenes.size())];
         std::string what = mutate(target, random);
         std::replace(what.begin(), what.end(), '\n', '|');
         run.mutations.push_back(what);
@@ -720,6 +743,9 @@ namespace
     else
       write_file(run.folder / base.step_file.name,
                  join(base.step_file.lines, "\n"));
+    std::error_code ignore;
+    run.output_existed =
+      !run.output.empty() && fs::exists(run.folder / run.output, ignore);
     return run;
   }
 } // namespace
@@ -754,7 +780,7 @@ main(int argc, char **argv)
        {"refused", "accepted", "crash", "hang", "garbage", "unclear"})
     counts[c] = 0;
   std::vector<Run> running;
-  std::size_t      next = 0;
+  std::size_t      next   = 0;
   const auto       finish = [&](Run &run) {
     std::string kind, reason;
     try
@@ -784,8 +810,7 @@ main(int argc, char **argv)
     std::error_code ignore;
     if (failure)
       {
-        const fs::path keep =
-          options.work / "failures" / run.folder.filename();
+        const fs::path keep = options.work / "failures" / run.folder.filename();
         fs::remove_all(keep, ignore);
         fs::create_directories(keep.parent_path(), ignore);
         fs::rename(run.folder, keep, ignore);
@@ -798,7 +823,7 @@ main(int argc, char **argv)
     {
       while (running.size() < options.jobs && next < options.cases)
         {
-          Run run = prepare(options, bases, next++);
+          Run            run = prepare(options, bases, next++);
           const fs::path step_file =
             bases[run.index % bases.size()].step_file.name;
           run.start = std::chrono::steady_clock::now();
@@ -812,7 +837,7 @@ main(int argc, char **argv)
         {
           int         status = 0;
           const pid_t done   = ::waitpid(it->pid, &status, WNOHANG);
-          it->seconds = std::chrono::duration<double>(
+          it->seconds        = std::chrono::duration<double>(
                           std::chrono::steady_clock::now() - it->start)
                           .count();
           if (done == 0 && it->seconds > options.timeout)
@@ -841,7 +866,7 @@ main(int argc, char **argv)
   std::cout << summary.str() << std::endl;
   if (log.is_open())
     log << summary.str() << std::endl;
-  const unsigned int failures = counts["crash"] + counts["hang"] +
-                                counts["garbage"] + counts["unclear"];
+  const unsigned int failures =
+    counts["crash"] + counts["hang"] + counts["garbage"] + counts["unclear"];
   return failures == 0 ? 0 : 1;
 }
