@@ -355,3 +355,23 @@ TEST(FuzzyParameters, ASubsectionAloneDeclaresAParameter)
             std::string::npos)
     << message;
 }
+
+
+TEST(ParameterFile, ThePathMustBeAReadableFile)
+{
+  const fs::path folder = fs::temp_directory_path() / "fuzzycontact-prm-dir";
+  fs::create_directories(folder);
+  EXPECT_NE(error_of([&]() {
+              Input::read_text_file(folder.string());
+            }).find("it is a folder, not a file"),
+            std::string::npos);
+  EXPECT_NE(error_of([&]() {
+              Input::read_text_file((folder / "none.prm").string());
+            }).find("there is no such file"),
+            std::string::npos);
+  EXPECT_NE(error_of([]() {
+              Input::read_text_file(" ");
+            }).find("its name is empty"),
+            std::string::npos);
+  fs::remove_all(folder);
+}
