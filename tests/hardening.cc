@@ -264,6 +264,14 @@ TEST(Limits, OutputDirectoryCheckedUpFront)
                 (fs::temp_directory_path() / "fuzzycontact-a" / "b").string());
             }),
             "");
+  EXPECT_EQ(error_of([]() {
+              Input::check_output_directory("results/");
+            }),
+            "");
+  EXPECT_NE(error_of([]() {
+              Input::check_output_directory("/");
+            }).find("is the current folder or one above it"),
+            std::string::npos);
 }
 
 

@@ -60,8 +60,11 @@ namespace FuzzyContact
                   ExcMessage(key + " must name a folder for the results, "
                                    "but it is empty."));
       std::error_code error;
-      const fs::path  target = fs::absolute(name, error).lexically_normal();
-      const fs::path  here   = fs::current_path(error).lexically_normal();
+      fs::path        target = fs::absolute(name, error).lexically_normal();
+      if (target.filename().empty() && target.has_parent_path() &&
+          target != target.root_path())
+        target = target.parent_path(); // "results/" is the folder results
+      const fs::path here = fs::current_path(error).lexically_normal();
       // The results replace the whole folder at the end of a run, so it
       // must be a folder of its own.
       const std::string t = target.string(), h = here.string();
