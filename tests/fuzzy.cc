@@ -134,7 +134,7 @@ TEST(SceneQuantity, NamesValuesAndErrors)
             std::string::npos);
   EXPECT_NE(error_of([&] {
               E1.apply(state, scene, -1);
-            }).find("P1.E must be positive"),
+            }).find("P1.E must lie between 1000 and 1e+13"),
             std::string::npos);
 }
 
@@ -187,11 +187,11 @@ TEST(FuzzyParameterSet, BadInputIsRefusedWithAMessage)
             std::string::npos); // mandatory entry missing
   EXPECT_NE(parse("set fuzzy parameters = P1.E\nsubsection Fuzzy parameter "
                   "P1.E\nset values = -1e9, 1e9, 2e9\nend\n")
-              .find("P1.E must be positive, got -1e+09"),
+              .find("P1.E must lie between 1000 and 1e+13"),
             std::string::npos);
   EXPECT_NE(parse("set fuzzy parameters = interface.mu\nsubsection Fuzzy "
                   "parameter interface.mu\nset values = -0.1, 0.3, 0.5\nend\n")
-              .find("interface.mu must not be negative"),
+              .find("interface.mu must lie between 0 and 10"),
             std::string::npos);
   EXPECT_NE(parse("set fuzzy parameters = P1.E\nsubsection Fuzzy parameter "
                   "P1.E\nset values = 1, nan, 3\nend\n")

@@ -1,4 +1,5 @@
 #include <fuzzycontact/base/input.h>
+#include <fuzzycontact/base/parameter_file.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
@@ -130,22 +131,61 @@ namespace FuzzyContact
     std::string
     read_text_file(const std::string &filename)
     {
+      namespace fs = std::filesystem;
+      AssertThrow(!Utilities::trim(filename).empty(),
+                  ExcMessage("A parameter file is needed, but its name is "
+                             "empty."));
+      std::error_code error;
+      const auto      status = fs::status(filename, error);
+      AssertThrow(fs::exists(status),
+                  ExcMessage("Cannot open the parameter file <" + filename +
+                             ">: there is no such file."));
+      AssertThrow(!fs::is_directory(status),
+                  ExcMessage("Cannot open the parameter file <" + filename +
+                             ">: it is a folder, not a file."));
+      AssertThrow(fs::is_regular_file(status),
+                  ExcMessage("Cannot open the parameter file <" + filename +
+                             ">: it is not a regular file."));
       std::ifstream in(filename);
       AssertThrow(in.good(),
                   ExcMessage("Cannot open the parameter file <" + filename +
-                             ">."));
+                             ">: it cannot be read (permissions?)."));
       std::ostringstream content;
       content << in.rdbuf();
+      AssertThrow(!in.bad(),
+                  ExcMessage("Reading the parameter file <" + filename +
+                             "> failed."));
       return content.str();
+    }
+
+
+    void
+    parse_text(ParameterHandler  &prm,
+               const std::string &text,
+               const std::string &filename,
+               const bool         skip_undefined)
+    {
+      std::istringstream in(text);
+      try
+        {
+          prm.parse_input(in, filename, "", skip_undefined);
+        }
+      catch (const ExceptionBase &e)
+        {
+          // ParameterHandler's own messages may name subsections in their
+          // internal, mangled form.
+          AssertThrow(false, ExcMessage(demangle_message(message_of(e))));
+        }
     }
 
 
     void
     parse_strictly(ParameterHandler &prm, const std::string &filename)
     {
-      std::istringstream in(read_text_file(filename));
-      prm.parse_input(in, filename, "", /*skip_undefined=*/false);
-      prm.assert_that_entries_have_been_set();
+      const std::string text = read_text_file(filename);
+      scan_parameter_text(text, filename);
+      parse_text(prm, text, filename, /*skip_undefined=*/false);
+      check_mandatory_entries(prm, filename);
     }
 
 
@@ -156,22 +196,21 @@ namespace FuzzyContact
                     const std::function<bool(ParameterHandler &)> &learn_names,
                     const std::function<void(ParameterHandler &)> &parse)
     {
+      scan_parameter_text(text, source_name);
       // Each pass can only learn the names one level deeper, so a handful
       // of passes settles any sensible file.
       for (unsigned int pass = 0; pass < 8; ++pass)
         {
-          ParameterHandler   prm;
-          std::istringstream in(text);
+          ParameterHandler prm;
           declare(prm);
-          prm.parse_input(in, source_name, "", /*skip_undefined=*/true);
+          parse_text(prm, text, source_name, /*skip_undefined=*/true);
           if (!learn_names(prm))
             break;
         }
-      ParameterHandler   prm;
-      std::istringstream in(text);
+      ParameterHandler prm;
       declare(prm);
-      prm.parse_input(in, source_name, "", /*skip_undefined=*/false);
-      prm.assert_that_entries_have_been_set();
+      parse_text(prm, text, source_name, /*skip_undefined=*/false);
+      check_mandatory_entries(prm, source_name);
       parse(prm);
     }
 
@@ -190,7 +229,7 @@ namespace FuzzyContact
           if (!line.empty())
             compact += (compact.empty() ? "" : " ") + line;
         }
-      return compact;
+      return demangle_message(compact);
     }
   } // namespace Input
 } // namespace FuzzyContact

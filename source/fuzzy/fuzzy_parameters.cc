@@ -4,6 +4,8 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
+
 namespace FuzzyContact
 {
   using namespace dealii;
@@ -17,7 +19,8 @@ namespace FuzzyContact
                       "Comma-separated scene quantities that are fuzzy "
                       "(P1.E, P1.root.rho, P1.tip.force, interface.mu, "
                       "interface.gap, ...); each has a subsection 'Fuzzy "
-                      "parameter <name>'.");
+                      "parameter <name>'. Optional: a subsection alone "
+                      "declares a fuzzy parameter.");
     for (const std::string &name : names_)
       {
         prm.enter_subsection("Fuzzy parameter " + name);
@@ -41,6 +44,23 @@ namespace FuzzyContact
   }
 
 
+  void
+  FuzzyParameterSet::add_names_of_subsections(
+    const std::vector<std::string> &subsections)
+  {
+    const std::string prefix = "Fuzzy parameter ";
+    for (const std::string &s : subsections)
+      if (s.rfind(prefix, 0) == 0)
+        {
+          const std::string name = Utilities::trim(s.substr(prefix.size()));
+          if (std::find(names_of_subsections_.begin(),
+                        names_of_subsections_.end(),
+                        name) == names_of_subsections_.end())
+            names_of_subsections_.push_back(name);
+        }
+  }
+
+
   bool
   FuzzyParameterSet::learn_names(ParameterHandler &prm)
   {
@@ -57,6 +77,9 @@ namespace FuzzyContact
                                  "> appears twice."));
         names.push_back(n);
       }
+    for (const std::string &n : names_of_subsections_)
+      if (std::find(names.begin(), names.end(), n) == names.end())
+        names.push_back(n);
     const bool changed = names != names_;
     names_             = names;
     return changed;
@@ -76,7 +99,8 @@ namespace FuzzyContact
         prm.enter_subsection(where);
         std::vector<double> values =
           Input::to_doubles(prm.get("values"), where + ": values");
-        if (prm.get_bool("relative"))
+        const bool relative = prm.get_bool("relative");
+        if (relative)
           {
             const double nominal = p.quantity.value(scene);
             for (double &v : values)
@@ -88,8 +112,21 @@ namespace FuzzyContact
         // Every value of the support must be admissible for the quantity,
         // and no two parameters may set the same value of the scene.
         SceneState check(scene);
-        for (const double v : {p.number.points()[0], p.number.points()[3]})
-          p.quantity.apply(check, scene, v);
+        try
+          {
+            for (const double v : {p.number.points()[0], p.number.points()[3]})
+              p.quantity.apply(check, scene, v);
+          }
+        catch (const ExceptionBase &e)
+          {
+            AssertThrow(false,
+                        ExcMessage(
+                          where + ": the ends of its support (" +
+                          (relative ? "the values times the scene's "
+                                      "value"
+                                    : "the values") +
+                          ") are not admissible: " + Input::message_of(e)));
+          }
         for (const FuzzyParameter &other : parameters_)
           AssertThrow(!p.quantity.overlaps(other.quantity, scene),
                       ExcMessage("fuzzy parameters: <" + other.quantity.name +

@@ -1,6 +1,8 @@
 #include <fuzzycontact/output/membership_plot.h>
 
+#include <cerrno>
 #include <cmath>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -19,6 +21,27 @@ namespace FuzzyContact
       for (const char c : s)
         q += (c == '"' ? std::string("\\\"") : std::string(1, c));
       return q + "\"";
+    }
+
+    // The plot folders of runs that were killed while gnuplot ran
+    // ("fuzzycontact-plot-<pid>-<k>" whose process is gone).
+    void
+    remove_stale_plot_folders()
+    {
+      namespace fs = std::filesystem;
+      std::error_code   error;
+      const std::string prefix = "fuzzycontact-plot-";
+      for (const auto &entry :
+           fs::directory_iterator(fs::temp_directory_path(error), error))
+        {
+          const std::string name = entry.path().filename().string();
+          if (name.rfind(prefix, 0) != 0)
+            continue;
+          const long pid = std::atol(name.c_str() + prefix.size());
+          if (pid > 0 && ::kill(static_cast<pid_t>(pid), 0) != 0 &&
+              errno == ESRCH)
+            fs::remove_all(entry.path(), error);
+        }
     }
   } // namespace
 
@@ -82,7 +105,8 @@ namespace FuzzyContact
 
     // Run gnuplot in a private folder and keep the picture in memory, so
     // that it is written with the other files, atomically.
-    namespace fs           = std::filesystem;
+    namespace fs = std::filesystem;
+    remove_stale_plot_folders();
     static int     counter = 0;
     const fs::path folder  = fs::temp_directory_path() /
                             ("fuzzycontact-plot-" + std::to_string(::getpid()) +

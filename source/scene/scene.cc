@@ -1,5 +1,6 @@
 #include <fuzzycontact/base/input.h>
 #include <fuzzycontact/scene/scene.h>
+#include <fuzzycontact/scene/scene_limits.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
@@ -616,6 +617,7 @@ namespace FuzzyContact
                     ExcMessage(where + ": slave and master must be different "
                                        "components."));
       }
+    SceneLimits::check_ranges(*this);
   }
 
 
@@ -627,20 +629,33 @@ namespace FuzzyContact
     // second the zone and load names of each component; the last one is
     // strict.
     Scene scene;
-    Input::parse_in_passes(
-      text,
-      source_name,
-      [&](ParameterHandler &prm) {
-        scene.declare_parameters(prm);
-      },
-      [&](ParameterHandler &prm) {
-        const std::string before = scene.names_signature();
-        scene.parse_names(prm);
-        return scene.names_signature() != before;
-      },
-      [&](ParameterHandler &prm) {
-        scene.parse_parameters(prm);
-      });
+    try
+      {
+        Input::parse_in_passes(
+          text,
+          source_name,
+          [&](ParameterHandler &prm) {
+            scene.declare_parameters(prm);
+          },
+          [&](ParameterHandler &prm) {
+            const std::string before = scene.names_signature();
+            scene.parse_names(prm);
+            return scene.names_signature() != before;
+          },
+          [&](ParameterHandler &prm) {
+            scene.parse_parameters(prm);
+          });
+      }
+    catch (const ExceptionBase &e)
+      {
+        // A step file may name several scenes: say which one is meant.
+        const std::string message = Input::message_of(e);
+        AssertThrow(false,
+                    ExcMessage(message.find(source_name) == std::string::npos
+                                 ? "Scene file <" + source_name +
+                                     ">: " + message
+                                 : message));
+      }
     return scene;
   }
 

@@ -1,4 +1,5 @@
 #include <fuzzycontact/base/input.h>
+#include <fuzzycontact/scene/scene_limits.h>
 #include <fuzzycontact/scene/scene_quantity.h>
 
 #include <deal.II/base/exceptions.h>
@@ -295,7 +296,10 @@ namespace FuzzyContact
         case Kind::youngs_modulus:
         case Kind::density:
           {
-            Input::positive(v, name);
+            if (kind == Kind::youngs_modulus)
+              SceneLimits::youngs_modulus(v, name);
+            else
+              SceneLimits::density(v, name);
             // From the scene's values: every zone takes v, or (zones that
             // differ) its own value times v / their nominal mean.
             const std::vector<double> from =
@@ -312,11 +316,11 @@ namespace FuzzyContact
             break;
           }
         case Kind::load:
-          state.load_forces[component][load] = Input::finite(v, name);
+          state.load_forces[component][load] = SceneLimits::force(v, name);
           break;
         case Kind::friction:
           state.friction_coefficients[contact_pair] =
-            Input::non_negative(v, name);
+            SceneLimits::friction_coefficient(v, name);
           break;
         case Kind::gap:
           state.gap_offsets[contact_pair] =

@@ -26,6 +26,7 @@
 #include <fuzzycontact/modal/mode_classification.h>
 #include <fuzzycontact/output/modal_report.h>
 #include <fuzzycontact/scene/scene.h>
+#include <fuzzycontact/study/input_checks.h>
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
@@ -94,15 +95,18 @@ namespace Step1
       scene_file =
         Input::resolve_relative_to(Utilities::trim(prm.get("scene")), prm_file);
       output_directory = Utilities::trim(prm.get("output directory"));
-      AssertThrow(!output_directory.empty(),
-                  ExcMessage("output directory must not be empty."));
+      Input::check_output_directory(output_directory);
       mesh_refinements        = prm.get_integer("mesh refinements");
       convergence_refinements = prm.get_integer("convergence refinements");
       compare_with_paper      = prm.get_bool("compare with paper");
       paper_cutoff_frequency =
-        Input::positive(prm.get_double("paper cutoff frequency"),
-                        "paper cutoff frequency");
+        Input::in_range(prm.get_double("paper cutoff frequency"),
+                        1,
+                        InputChecks::max_cutoff_frequency,
+                        "paper cutoff frequency",
+                        "in Hz");
       modal.parse_parameters(prm);
+      InputChecks::check(modal);
     }
   };
 
@@ -143,7 +147,16 @@ namespace Step1
     Parameters::declare_parameters(prm);
     Input::parse_strictly(prm, parameter_file);
     parameters.parse_parameters(prm, parameter_file);
-    scene  = Scene::read(parameters.scene_file);
+    scene = Scene::read(parameters.scene_file);
+    // The convergence study refines furthest: it sets the memory needed.
+    SceneLimits::check_memory(scene,
+                              parameters.mesh_refinements +
+                                parameters.convergence_refinements,
+                              /*static_correction=*/false,
+                              "mesh refinements + convergence refinements");
+    InputChecks::check_modes_fit(scene,
+                                 parameters.mesh_refinements,
+                                 parameters.modal.n_modes);
     report = std::make_unique<ModalReport>(parameters.output_directory);
   }
 

@@ -26,6 +26,7 @@
 // Usage: step-2 prm/step-2.prm
 
 #include <fuzzycontact/base/input.h>
+#include <fuzzycontact/base/limits.h>
 #include <fuzzycontact/base/program.h>
 #include <fuzzycontact/fe/component.h>
 #include <fuzzycontact/modal/modal_solver.h>
@@ -107,8 +108,7 @@ namespace Step2
     parse_parameters(ParameterHandler &prm, const std::string &prm_file)
     {
       output_directory = Utilities::trim(prm.get("output directory"));
-      AssertThrow(!output_directory.empty(),
-                  ExcMessage("output directory must not be empty."));
+      Input::check_output_directory(output_directory);
       mesh_refinements = prm.get_integer("mesh refinements");
       methods          = Utilities::split_string_list(prm.get("methods"), ',');
       modal.parse_parameters(prm);

@@ -32,6 +32,7 @@
 #include <fuzzycontact/output/contact_report.h>
 #include <fuzzycontact/output/report.h>
 #include <fuzzycontact/study/full_order_model.h>
+#include <fuzzycontact/study/input_checks.h>
 #include <fuzzycontact/study/observations.h>
 #include <fuzzycontact/study/reduced_order_model.h>
 
@@ -150,11 +151,10 @@ namespace Step3
       paper_scene_file =
         paper.empty() ? "" : Input::resolve_relative_to(paper, prm_file);
       output_directory = Utilities::trim(prm.get("output directory"));
-      AssertThrow(!output_directory.empty(),
-                  ExcMessage("output directory must not be empty."));
+      Input::check_output_directory(output_directory);
       outputs          = Observations::split(prm.get("outputs"));
       mesh_refinements = prm.get_integer("mesh refinements");
-      load             = Input::finite(prm.get_double("load"), "load");
+      load             = SceneLimits::force(prm.get_double("load"), "load");
       friction_coefficients.clear();
       for (const std::string &mu :
            Utilities::split_string_list(prm.get("friction coefficients")))
@@ -166,11 +166,10 @@ namespace Step3
       AssertThrow(!friction_coefficients.empty(),
                   ExcMessage("friction coefficients: at least one value "
                              "is needed."));
-      const long steps = prm.get_integer("load steps");
-      AssertThrow(steps >= 1,
-                  ExcMessage("load steps must be at least 1, got " +
-                             std::to_string(steps) + "."));
-      n_load_steps = steps;
+      n_load_steps = Input::integer_in_range(prm.get_integer("load steps"),
+                                             1,
+                                             1000,
+                                             "load steps");
       penetration_tolerance =
         Input::non_negative(prm.get_double("penetration tolerance"),
                             "penetration tolerance");
@@ -185,6 +184,7 @@ namespace Step3
       prm.leave_subsection();
       exact.parse_parameters(prm);
       fl2c.parse_parameters(prm);
+      InputChecks::check(modal, exact, fl2c);
     }
   };
 
@@ -233,22 +233,23 @@ namespace Step3
     Input::parse_strictly(prm, parameter_file);
     parameters.parse_parameters(prm, parameter_file);
     observed = ContactReport::observed_outputs(parameters.outputs);
+    InputChecks::SceneReader read{parameters.mesh_refinements,
+                                  true,
+                                  parameters.modal.n_modes};
     for (const std::string &file : parameters.scene_files)
       {
-        scenes.push_back(Scene::read(file));
-        AssertThrow(!scenes.back().contact_pairs.empty(),
-                    ExcMessage("Scene " + file + " has no contact pairs."));
+        scenes.push_back(read(file));
         Observations::check(observed, scenes.back());
       }
     if (!parameters.paper_scene_file.empty())
       {
         with_paper              = true;
-        paper_scene             = Scene::read(parameters.paper_scene_file);
+        paper_scene             = read(parameters.paper_scene_file);
         paper_scene.plane_model = PlaneModel::plane_strain;
-        AssertThrow(!paper_scene.contact_pairs.empty(),
-                    ExcMessage("The paper scene has no contact pairs."));
         Observations::check(observed, paper_scene);
       }
+    for (const std::string &w : read.warnings)
+      report.say(w + "\n");
     output = OutputFiles(parameters.output_directory);
   }
 

@@ -34,6 +34,7 @@
 // Usage: step-4 prm/step-4.prm
 
 #include <fuzzycontact/base/input.h>
+#include <fuzzycontact/base/parameter_file.h>
 #include <fuzzycontact/base/program.h>
 #include <fuzzycontact/base/progress.h>
 #include <fuzzycontact/fuzzy/extension_principle.h>
@@ -46,6 +47,7 @@
 #include <fuzzycontact/output/report.h>
 #include <fuzzycontact/scene/scene.h>
 #include <fuzzycontact/study/fuzzy_contact_model.h>
+#include <fuzzycontact/study/input_checks.h>
 #include <fuzzycontact/study/observations.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -55,6 +57,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -84,6 +87,7 @@ namespace Step4
     FuzzyParameterSet         fuzzy;
     FuzzyContactModelSettings model;
     OptimisationSettings      optimisation;
+    std::vector<std::string>  warnings;
 
     void
     declare_parameters(ParameterHandler &prm) const
@@ -148,15 +152,14 @@ namespace Step4
       scene_file =
         Input::resolve_relative_to(Utilities::trim(prm.get("scene")), prm_file);
       output_directory = Utilities::trim(prm.get("output directory"));
-      AssertThrow(!output_directory.empty(),
-                  ExcMessage("output directory must not be empty."));
-      const long n = prm.get_integer("number of alpha levels");
-      AssertThrow(n >= 2,
-                  ExcMessage("number of alpha levels must be at least 2 (the "
-                             "support and the core), got " +
-                             std::to_string(n) + "."));
-      n_alpha             = n;
-      vertex_method       = prm.get_bool("vertex method");
+      Input::check_output_directory(output_directory);
+      n_alpha       = Input::integer_in_range(prm.get_integer("number of alpha "
+                                                              "levels"),
+                                        2,
+                                        101,
+                                        "number of alpha levels",
+                                        "at least the support and the core");
+      vertex_method = prm.get_bool("vertex method");
       extension_principle = prm.get_bool("extension principle");
       prm.enter_subsection("Extension principle");
       points_per_dimension = prm.get_integer("points per dimension");
@@ -165,14 +168,51 @@ namespace Step4
       model.parse_parameters(prm);
       optimisation.parse_parameters(prm);
       ProgressLines::parse_parameters(prm);
+      InputChecks::check(model.modal);
+      InputChecks::check(model.fl2c);
+      InputChecks::check(optimisation);
 
       scene = Scene::read(scene_file);
       fuzzy.parse_parameters(prm, scene);
       AssertThrow(!fuzzy.parameters().empty(),
                   ExcMessage("fuzzy parameters: name at least one fuzzy "
-                             "parameter of the scene."));
+                             "parameter of the scene (a subsection 'Fuzzy "
+                             "parameter <name>' with its values)."));
       outputs = Observations::split(prm.get("outputs"));
       Observations::check(outputs, scene);
+      check_cost_and_warn(scene);
+    }
+
+    // The size of the model and of the Extension Principle, and the
+    // warnings of input that is valid but cannot be meant.
+    void
+    check_cost_and_warn(const Scene &scene)
+    {
+      warnings = InputChecks::check_scene(scene,
+                                          scene_file,
+                                          model.mesh_refinements,
+                                          model.reduced.static_correction,
+                                          model.modal.n_modes);
+      if (extension_principle)
+        Input::in_range(n_alpha * std::pow(1.0 * points_per_dimension,
+                                           fuzzy.parameters().size()),
+                        0,
+                        1e5,
+                        "Extension principle: points per dimension = " +
+                          std::to_string(points_per_dimension) + " with " +
+                          std::to_string(fuzzy.parameters().size()) +
+                          " fuzzy parameters and " + std::to_string(n_alpha) +
+                          " alpha levels: the exact solves (about number of "
+                          "alpha levels x points per dimension ^ parameters)",
+                        "lower one of these keys");
+      bool all_crisp = true;
+      for (const FuzzyParameter &p : fuzzy.parameters())
+        all_crisp = all_crisp && p.number.points()[0] == p.number.points()[3];
+      if (all_crisp)
+        warnings.push_back("warning: every fuzzy parameter is crisp (its "
+                           "support has no width): the outputs cannot "
+                           "change, and every membership function is a "
+                           "single value.");
     }
   };
 
@@ -212,8 +252,12 @@ namespace Step4
       , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
   {
     // All input is read and checked before anything is computed or written.
+    // A fuzzy parameter is declared by its subsection alone.
+    const std::string text = Input::read_text_file(parameter_file);
+    parameters.fuzzy.add_names_of_subsections(
+      Input::scan_parameter_text(text, parameter_file).top_level_subsections);
     Input::parse_in_passes(
-      Input::read_text_file(parameter_file),
+      text,
       parameter_file,
       [&](ParameterHandler &prm) {
         parameters.declare_parameters(prm);
@@ -224,6 +268,8 @@ namespace Step4
       [&](ParameterHandler &prm) {
         parameters.parse_parameters(prm, parameter_file, scene);
       });
+    for (const std::string &w : parameters.warnings)
+      report.say(w + "\n");
     results.scene       = scene.name;
     results.n_processes = Utilities::MPI::n_mpi_processes(comm);
     results.parameters  = parameters.fuzzy.parameters();

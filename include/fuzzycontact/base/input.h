@@ -61,14 +61,27 @@ namespace FuzzyContact
     resolve_relative_to(const std::string &path,
                         const std::string &reference_file);
 
-    /** The whole content of a text file; throws naming the file if absent. */
+    /**
+     * The whole content of a text file; throws naming the file if it does
+     * not exist, is a folder or cannot be read.
+     */
     std::string
     read_text_file(const std::string &filename);
 
     /**
+     * Parses @p text (the content of @p filename) into @p prm; a message
+     * of ParameterHandler is rethrown in the file's spelling of the names.
+     */
+    void
+    parse_text(ParameterHandler  &prm,
+               const std::string &text,
+               const std::string &filename,
+               const bool         skip_undefined);
+
+    /**
      * Parses the parameter file @p filename into @p prm strictly: an unknown
-     * key or subsection, a malformed value and a missing mandatory entry all
-     * throw.
+     * key or subsection, a key set twice, a malformed value and a missing
+     * mandatory entry all throw.
      */
     void
     parse_strictly(ParameterHandler &prm, const std::string &filename);
@@ -79,8 +92,9 @@ namespace FuzzyContact
      * @p declare knows so far into a fresh ParameterHandler and parses
      * @p text skipping the rest; @p learn_names reads the name lists and
      * returns true if they changed. When nothing changes any more, a last
-     * pass declares everything and parses strictly (unknown keys, malformed
-     * values and missing mandatory entries throw), and @p parse reads it.
+     * pass declares everything and parses strictly (unknown keys, keys set
+     * twice, malformed values and missing mandatory entries throw), and
+     * @p parse reads it.
      */
     void
     parse_in_passes(const std::string                             &text,

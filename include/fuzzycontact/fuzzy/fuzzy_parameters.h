@@ -1,6 +1,5 @@
-// The fuzzy parameters of a study, as a parameter file declares them:
-//
-//   set fuzzy parameters = P1.E, P2.E, P1.tip.force
+// The fuzzy parameters of a study, as a parameter file declares them: one
+// subsection per parameter is enough,
 //
 //   subsection Fuzzy parameter P1.E
 //     set shape    = triangular
@@ -11,6 +10,10 @@
 //     set shape  = triangular
 //     set values = 10e3, 50e3, 100e3
 //   end
+//
+// and the list 'set fuzzy parameters = P1.E, P1.tip.force' is optional: it
+// may name parameters (in the order of the outputs) that then need their
+// subsection, and the subsections not in it follow in the file's order.
 //
 // Every name must be a quantity of the scene (scene_quantity.h); the support
 // of each fuzzy number must be admissible for it (a modulus stays positive,
@@ -46,7 +49,18 @@ namespace FuzzyContact
     void
     declare_parameters(ParameterHandler &prm) const;
 
-    /** Reads the list of names; true if it changed. */
+    /**
+     * Every name of @p subsections that starts with "Fuzzy parameter " (the
+     * top-level subsections of the parameter file,
+     * Input::scan_parameter_text) declares a fuzzy parameter.
+     */
+    void
+    add_names_of_subsections(const std::vector<std::string> &subsections);
+
+    /**
+     * Reads the list of names, followed by those of the subsections not in
+     * it; true if the names changed.
+     */
     bool
     learn_names(ParameterHandler &prm);
 
@@ -71,6 +85,7 @@ namespace FuzzyContact
 
   private:
     std::vector<std::string>    names_;
+    std::vector<std::string>    names_of_subsections_;
     std::vector<FuzzyParameter> parameters_;
   };
 } // namespace FuzzyContact

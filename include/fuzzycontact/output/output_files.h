@@ -1,7 +1,11 @@
 // Writing results: every file of a run is kept in memory until the run has
-// succeeded, then written atomically (to a temporary file in the same folder,
-// renamed over the target), so that a failed run leaves no files and a
-// finished one never leaves a half-written file.
+// succeeded, then written as a set: into a new folder beside the output
+// folder (".<name>.new-<pid>"), which is then swapped with the old one in a
+// single rename (Linux's RENAME_EXCHANGE; elsewhere two renames). A reader
+// sees the old set or the new one, never a mix; a failed run leaves no
+// files; the staging folders of a killed run are removed by the next run
+// that writes beside them. Results with a NaN or an infinity, or computed
+// after a LAPACK error (base/lapack_errors.h), are refused, not written.
 
 #ifndef fuzzycontact_output_output_files_h
 #define fuzzycontact_output_output_files_h
@@ -30,7 +34,11 @@ namespace FuzzyContact
     void
     add(const std::string &filename, std::string content);
 
-    /** Creates the folder and writes every queued file atomically. */
+    /**
+     * Writes every queued file, replacing the whole folder at once (see
+     * the top of this file). Throws, writing nothing, if a text file holds
+     * a NaN or an infinity or if a LAPACK error is pending.
+     */
     void
     write_all() const;
 

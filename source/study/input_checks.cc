@@ -1,0 +1,168 @@
+#include <fuzzycontact/base/limits.h>
+#include <fuzzycontact/scene/scene_limits.h>
+#include <fuzzycontact/study/input_checks.h>
+
+#include <deal.II/base/exceptions.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace FuzzyContact
+{
+  namespace InputChecks
+  {
+    void
+    check(const ModalParameters &modal)
+    {
+      Input::integer_in_range(modal.n_modes,
+                              1,
+                              max_modes,
+                              "Modal analysis: number of modes");
+      Input::in_range(modal.tolerance,
+                      min_solver_tolerance,
+                      max_modal_tolerance,
+                      "Modal analysis: tolerance",
+                      "a relative eigenpair residual");
+      Input::in_range(modal.shift,
+                      -max_shift,
+                      max_shift,
+                      "Modal analysis: shift",
+                      "an eigenvalue omega^2 in 1/s^2");
+      Input::in_range(modal.cutoff_frequency,
+                      0,
+                      max_cutoff_frequency,
+                      "Modal analysis: cutoff frequency",
+                      "in Hz; 0 means none");
+    }
+
+
+    void
+    check(const FL2CParameters &fl2c)
+    {
+      Input::integer_in_range(fl2c.max_iterations,
+                              1,
+                              max_fl2c_iterations,
+                              "FL2C: max iterations");
+      Input::in_range(fl2c.tolerance,
+                      min_solver_tolerance,
+                      max_solver_tolerance,
+                      "FL2C: tolerance",
+                      "a relative force change; below about 1e-14 round-off "
+                      "never lets it converge");
+      for (const double x : fl2c.gap_points)
+        Input::in_range(x, -1e3, 1e3, "FL2C: gap points", "in m");
+      for (const double x : fl2c.slip_points)
+        Input::in_range(x, -1e3, 1e3, "FL2C: slip points", "in m");
+      for (const double x : fl2c.force_points)
+        Input::in_range(x, -1e12, 1e12, "FL2C: force points", "in N");
+      for (const double x : fl2c.friction_points)
+        Input::in_range(x, -1e12, 1e12, "FL2C: friction points", "in N");
+    }
+
+
+    void
+    check(const ActiveSetParameters &exact)
+    {
+      Input::integer_in_range(exact.max_iterations,
+                              1,
+                              max_exact_iterations,
+                              "Exact contact solver: max iterations");
+      Input::in_range(exact.tolerance,
+                      min_solver_tolerance,
+                      max_solver_tolerance,
+                      "Exact contact solver: tolerance");
+    }
+
+
+    void
+    check(const OptimisationSettings &optimisation)
+    {
+      Input::integer_in_range(optimisation.max_iterations,
+                              1,
+                              max_optimisation_steps,
+                              "Optimisation: iteration limit");
+    }
+
+
+    void
+    check_modes_fit(const Scene       &scene,
+                    const unsigned int refinements,
+                    const unsigned int n_modes)
+    {
+      for (unsigned int c = 0; c < scene.components.size(); ++c)
+        {
+          const ComponentDescription &component = scene.components[c];
+          // Clamped DoFs: both displacements of the nodes of each clamped
+          // face (corners counted twice, which only errs on the safe side).
+          double clamped = 0;
+          for (const Face f : component.clamped_faces)
+            {
+              const unsigned int d =
+                (f == Face::left || f == Face::right) ? 1 : 0;
+              clamped +=
+                2 * (component.subdivisions[d] * std::ldexp(1.0, refinements) *
+                       component.fe_degree +
+                     1);
+            }
+          const double free =
+            SceneLimits::n_dofs(scene, c, refinements) - clamped;
+          const double needed = 2.0 * n_modes + 12;
+          AssertThrow(
+            free >= needed,
+            ExcMessage(
+              "Modal analysis: number of modes = " + std::to_string(n_modes) +
+              " needs at least " + std::to_string(static_cast<long>(needed)) +
+              " free DoFs per component, but component " + component.name +
+              " of scene <" + scene.name + "> has only " +
+              std::to_string(static_cast<long>(std::max(free, 0.))) +
+              " after clamping. Ask for fewer modes, or refine "
+              "(mesh refinements, the component's subdivisions "
+              "or fe degree)."));
+        }
+    }
+
+
+    std::vector<std::string>
+    check_scene(const Scene       &scene,
+                const std::string &scene_file,
+                const unsigned int refinements,
+                const bool         static_correction,
+                const unsigned int n_modes,
+                const std::string &key)
+    {
+      SceneLimits::check_memory(scene, refinements, static_correction, key);
+      check_modes_fit(scene, refinements, n_modes);
+      std::vector<std::string> warnings;
+      for (const std::string &w : SceneLimits::warnings(scene))
+        warnings.push_back("warning: " + scene_file + ": " + w);
+      return warnings;
+    }
+
+
+    void
+    check(const ModalParameters     &modal,
+          const ActiveSetParameters &exact,
+          const FL2CParameters      &fl2c)
+    {
+      check(modal);
+      check(exact);
+      check(fl2c);
+    }
+
+
+    Scene
+    SceneReader::operator()(const std::string &file)
+    {
+      Scene scene = Scene::read(file);
+      AssertThrow(!scene.contact_pairs.empty(),
+                  ExcMessage("Scene file <" + file +
+                             "> has no contact pairs; a contact study needs "
+                             "at least one ('contact pairs' in subsection "
+                             "Scene)."));
+      for (const std::string &w :
+           check_scene(scene, file, refinements, static_correction, n_modes))
+        warnings.push_back(w);
+      return scene;
+    }
+  } // namespace InputChecks
+} // namespace FuzzyContact
