@@ -621,7 +621,8 @@ namespace FuzzyContact
                   << m.reanalysis->basis_size(m.reanalysis->order())
                   << " basis vectors)";
             else
-              out << ": exact scaling of the stiffness (modes unchanged)";
+              out << ": exact scaling of the stiffness"
+                  << (m.n_modes > 0 ? " (modes unchanged)" : "");
           }
         out << "\n";
       }
