@@ -1,4 +1,5 @@
 #include <fuzzycontact/base/input.h>
+#include <fuzzycontact/base/lapack_errors.h>
 #include <fuzzycontact/base/sparse_cholesky.h>
 #include <fuzzycontact/base/sparse_direct_solver.h>
 #include <fuzzycontact/modal/modal_solver.h>
@@ -196,6 +197,9 @@ namespace FuzzyContact
                 << "): " << Input::message_of(e);
         AssertThrow(false, ExcMessage(message.str()));
       }
+    // ARPACK's LAPACK calls (e.g. DLASCL on overflowed values) report
+    // illegal arguments through xerbla only.
+    LapackErrors::check(what + ": the modal analysis (ARPACK)");
 
     std::vector<unsigned int> order(n_modes);
     std::iota(order.begin(), order.end(), 0);

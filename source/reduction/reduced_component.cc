@@ -1,3 +1,4 @@
+#include <fuzzycontact/base/lapack_errors.h>
 #include <fuzzycontact/reduction/reduced_component.h>
 
 #include <deal.II/base/exceptions.h>
@@ -171,6 +172,8 @@ namespace FuzzyContact
         V_B(i, j) = modes.modes[j][boundary[i]];
     if (static_correction)
       build_static_correction(attachment_dofs, rank_tolerance);
+    LapackErrors::check("Component " + component.name() +
+                        ": the static correction");
 
     const unsigned int n_s = X.n();
     K_r.reinit(n_m + n_s, n_m + n_s);
