@@ -1,3 +1,4 @@
+#include <fuzzycontact/base/timer_section.h>
 #include <fuzzycontact/reanalysis/order_selection.h>
 #include <fuzzycontact/reanalysis/parameter_independent_reanalysis.h>
 
@@ -41,8 +42,7 @@ namespace FuzzyContact
                 ExcMessage("modal reanalysis: no parameter is declared "
                            "variable."));
     const auto scope = [timer](const std::string &stage) {
-      return timer ? std::make_unique<TimerOutput::Scope>(*timer, stage)
-                   : std::unique_ptr<TimerOutput::Scope>();
+      return timer_section(timer, stage);
     };
 
     residual_check_.reset();

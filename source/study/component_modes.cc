@@ -1,4 +1,5 @@
 #include <fuzzycontact/base/progress.h>
+#include <fuzzycontact/base/timer_section.h>
 #include <fuzzycontact/contact/contact_problem.h>
 #include <fuzzycontact/reduction/reduced_component.h>
 #include <fuzzycontact/study/component_modes.h>
@@ -8,18 +9,6 @@
 
 namespace FuzzyContact
 {
-  namespace
-  {
-    std::unique_ptr<TimerOutput::Scope>
-    time(TimerOutput *timer, const std::string &section)
-    {
-      return timer != nullptr
-               ? std::make_unique<TimerOutput::Scope>(*timer, section)
-               : std::unique_ptr<TimerOutput::Scope>();
-    }
-  } // namespace
-
-
   std::vector<ModalBasis>
   component_modes(const ContactScene      &bodies,
                   const ModalParameters   &parameters,
@@ -42,7 +31,7 @@ namespace FuzzyContact
         if (parameters.shift == 0)
           {
             const auto factorisation = bodies.stiffness_factorisation(c, timer);
-            auto       scope         = time(timer, "modes (ARPACK)");
+            auto       scope         = timer_section(timer, "modes (ARPACK)");
             modes.push_back(solver.solve(component.stiffness_matrix(),
                                          component.mass_matrix(),
                                          *factorisation,
@@ -50,7 +39,7 @@ namespace FuzzyContact
           }
         else
           {
-            auto scope = time(timer, "modes (ARPACK)");
+            auto scope = timer_section(timer, "modes (ARPACK)");
             modes.push_back(solver.solve(component.stiffness_matrix(),
                                          component.mass_matrix(),
                                          what));

@@ -1,4 +1,5 @@
 #include <fuzzycontact/base/progress.h>
+#include <fuzzycontact/base/timer_section.h>
 #include <fuzzycontact/study/contact_scene.h>
 
 #include <deal.II/base/exceptions.h>
@@ -21,10 +22,8 @@ namespace FuzzyContact
                                                     timer));
         components_.push_back(owned.back().get());
       }
-    std::unique_ptr<TimerOutput::Scope> scope;
-    if (timer != nullptr)
-      scope = std::make_unique<TimerOutput::Scope>(*timer, "contact interface");
-    interface_ = std::make_unique<ContactInterface>(scene_,
+    const auto scope = timer_section(timer, "contact interface");
+    interface_       = std::make_unique<ContactInterface>(scene_,
                                                     components_,
                                                     penetration_tolerance);
     factorisations.resize(owned.size());
@@ -121,11 +120,8 @@ namespace FuzzyContact
     AssertIndexRange(c, owned.size());
     if (factorisations[c] == nullptr)
       {
-        std::unique_ptr<TimerOutput::Scope> scope;
-        if (timer != nullptr)
-          scope = std::make_unique<TimerOutput::Scope>(
-            *timer,
-            "stiffness factorisation (CHOLMOD)");
+        const auto scope =
+          timer_section(timer, "stiffness factorisation (CHOLMOD)");
         auto factorisation = std::make_shared<SparseCholesky>();
         factorisation->factorize(owned[c]->stiffness_matrix(),
                                  boundary_dofs(c),

@@ -1,4 +1,5 @@
 #include <fuzzycontact/base/progress.h>
+#include <fuzzycontact/base/timer_section.h>
 #include <fuzzycontact/contact/fl2c.h>
 #include <fuzzycontact/study/reduced_order_model.h>
 
@@ -12,14 +13,6 @@ namespace FuzzyContact
 {
   namespace
   {
-    std::unique_ptr<TimerOutput::Scope>
-    time(TimerOutput *timer, const std::string &section)
-    {
-      return timer != nullptr
-               ? std::make_unique<TimerOutput::Scope>(*timer, section)
-               : std::unique_ptr<TimerOutput::Scope>();
-    }
-
     // Copies the block [rows, columns) of @p A.
     FullMatrix<double>
     block(const FullMatrix<double> &A,
@@ -157,7 +150,7 @@ namespace FuzzyContact
         build_component(*models[c], c, observed[c], timer);
     if (spread)
       {
-        auto scope = time(timer, "reduced blocks exchanged (MPI)");
+        auto scope = timer_section(timer, "reduced blocks exchanged (MPI)");
         for (unsigned int c = 0; c < n_c; ++c)
           exchange_component(*models[c], c % n_ranks, comm);
       }
@@ -182,7 +175,7 @@ namespace FuzzyContact
           build_reanalysis(m, c, varying, timer);
       }
 
-    auto scope = time(timer, "reduced contact flexibility");
+    auto scope = timer_section(timer, "reduced contact flexibility");
     reduced =
       std::make_unique<ReducedContactModel>(std::move(nominal),
                                             interface.initial_gaps(),
@@ -225,8 +218,8 @@ namespace FuzzyContact
     const ContactInterface &interface = bodies.interface();
     {
       const auto factorisation = bodies.stiffness_factorisation(c, timer);
-      auto       scope         = time(timer, "static correction modes");
-      m.reduced                = std::make_unique<ReducedComponent>(component,
+      auto       scope = timer_section(timer, "static correction modes");
+      m.reduced        = std::make_unique<ReducedComponent>(component,
                                                      m.modes,
                                                      factorisation,
                                                      interface.contact_dofs(c),
@@ -234,7 +227,7 @@ namespace FuzzyContact
                                                      settings.rank_tolerance);
     }
     {
-      auto scope = time(timer, "reduced matrices");
+      auto scope = timer_section(timer, "reduced matrices");
       m.nominal_matrices =
         m.reduced->matrices(interface.gap_operator(c), observed);
     }
@@ -303,7 +296,7 @@ namespace FuzzyContact
                           rs.cluster_gap,
                           timer);
     {
-      auto scope = time(timer, "reanalysis order selection");
+      auto scope = timer_section(timer, "reanalysis order selection");
       std::vector<std::vector<double>> corners;
       const unsigned int               n = names.size();
       for (unsigned long corner = 0; corner < (1ul << n); ++corner)
@@ -318,9 +311,9 @@ namespace FuzzyContact
                                  rs.residual_check);
     }
 
-    auto                scope    = time(timer, "reanalysis projections");
-    const ReducedBasis &T        = m.reanalysis->basis();
-    const unsigned int  n_m      = m.reduced->n_modes();
+    auto                scope = timer_section(timer, "reanalysis projections");
+    const ReducedBasis &T     = m.reanalysis->basis();
+    const unsigned int  n_m   = m.reduced->n_modes();
     const bool          galerkin = settings.zone_correction ==
                           ReducedModelSettings::ZoneCorrection::galerkin;
     const unsigned int n_s = galerkin ? m.reduced->n_corrections() : 0;
