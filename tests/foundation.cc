@@ -102,19 +102,19 @@ TEST(Scene, ReadsTheDefaultScenes)
       EXPECT_EQ(p1.zones[0].density, 7900);
       ASSERT_EQ(p1.loads.size(), 1u);
       EXPECT_EQ(p1.loads[0].total_force, 50000);
-      EXPECT_EQ(p1.loads[0].face, Face::right);
+      EXPECT_EQ(p1.loads[0].face, "right");
       EXPECT_EQ(p1.loads[0].direction[1], -1.);
       ASSERT_EQ(scene.contact_pairs.size(), 1u);
       const ContactPairDescription &pair = scene.contact_pairs[0];
       EXPECT_EQ(pair.slave_component, "P1");
-      EXPECT_EQ(pair.slave_face, Face::bottom);
+      EXPECT_EQ(pair.slave_face, "bottom");
       EXPECT_EQ(pair.master_component, "P2");
-      EXPECT_EQ(pair.master_face, Face::top);
+      EXPECT_EQ(pair.master_face, "top");
       EXPECT_EQ(pair.friction_coefficient, 0.3);
       EXPECT_FALSE(pair.has_initial_gap);
     }
   const Scene overlap = Scene::read(source_dir + "/prm/overlap.prm");
-  EXPECT_EQ(overlap.components[1].clamped_faces[0], Face::right);
+  EXPECT_EQ(overlap.components[1].clamped_faces[0], "right");
   EXPECT_NEAR(overlap.components[1].lower_left[0], 0.1, 1e-15);
 }
 
@@ -259,8 +259,8 @@ INSTANTIATE_TEST_SUITE_P(
              "  set components = beam\n  set contact pairs = c\nend\n"
              "subsection Contact c\n  set slave component = beam\n"
              "  set master component = beam\n  set master face = side",
-             "The entry value side for the entry named master face does not "
-             "match"},
+             "Contact c: master face: <side> is not a face of a rectangular "
+             "component; use left, right, bottom or top."},
     BadInput{"negative_friction",
              "  set components = beam",
              "  set components = beam\n  set contact pairs = c\nend\n"

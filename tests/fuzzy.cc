@@ -735,9 +735,9 @@ TEST(FuzzyContactModel, EveryLoadHasItsOwnForce)
 {
   Scene scene = Scene::read(source_dir + "/prm/overlap.prm");
   scene.components[1].loads.push_back(
-    EdgeLoad{"extra", Face::left, 5e3, dealii::Tensor<1, 2>({0., -1.})});
+    EdgeLoad{"extra", "left", 5e3, dealii::Tensor<1, 2>({0., -1.})});
   scene.components[1].loads.push_back(
-    EdgeLoad{"lift", Face::left, 0., dealii::Tensor<1, 2>({0., 1.})});
+    EdgeLoad{"lift", "left", 0., dealii::Tensor<1, 2>({0., 1.})});
   const FuzzyParameterSet set = fuzzy_parameters(scene, R"(
 set fuzzy parameters = P1.tip.force, P2.lift.force
 subsection Fuzzy parameter P1.tip.force

@@ -15,28 +15,6 @@ namespace FuzzyContact
 {
   namespace
   {
-    Tensor<1, 2>
-    outward_normal(const Face face)
-    {
-      Tensor<1, 2> n;
-      switch (face)
-        {
-          case Face::left:
-            n[0] = -1;
-            break;
-          case Face::right:
-            n[0] = 1;
-            break;
-          case Face::bottom:
-            n[1] = -1;
-            break;
-          case Face::top:
-            n[1] = 1;
-            break;
-        }
-      return n;
-    }
-
     // tau = n turned clockwise by 90 degrees.
     Tensor<1, 2>
     tangent_of(const Tensor<1, 2> &n)
@@ -47,27 +25,148 @@ namespace FuzzyContact
       return t;
     }
 
-    // The nodes of one face (edge) of a cell: its DoFs grouped by support
-    // point into (x, y) pairs, sorted along @p tau.
-    template <typename FaceIterator>
-    std::vector<FaceNode>
-    nodes_of_face(const Component    &component,
+    // Values and first and second derivatives at t of the 1D Lagrange
+    // polynomials through the points ts.
+    struct Lagrange
+    {
+      std::vector<double> value, first, second;
+    };
+
+    Lagrange
+    lagrange(const std::vector<double> &ts, const double t)
+    {
+      const unsigned int n = ts.size();
+      Lagrange           l{std::vector<double>(n, 1.),
+                 std::vector<double>(n, 0.),
+                 std::vector<double>(n, 0.)};
+      for (unsigned int k = 0; k < n; ++k)
+        for (unsigned int a = 0; a < n; ++a)
+          {
+            if (a == k)
+              continue;
+            const double da = ts[k] - ts[a];
+            l.value[k] *= (t - ts[a]) / da;
+            double d1 = 1. / da;
+            for (unsigned int b = 0; b < n; ++b)
+              if (b != k && b != a)
+                d1 *= (t - ts[b]) / (ts[k] - ts[b]);
+            l.first[k] += d1;
+            for (unsigned int b = 0; b < n; ++b)
+              {
+                if (b == k || b == a)
+                  continue;
+                double d2 = 1. / (da * (ts[k] - ts[b]));
+                for (unsigned int c = 0; c < n; ++c)
+                  if (c != k && c != a && c != b)
+                    d2 *= (t - ts[c]) / (ts[k] - ts[c]);
+                l.second[k] += d2;
+              }
+          }
+      return l;
+    }
+
+    // The geometry of one boundary face (edge) of a cell: its nodes (DoFs
+    // grouped by support point into (x, y) pairs) sorted along the chord
+    // between its vertices, their local coordinates in [0, 1], and the
+    // sign that turns (x'_y, -x'_x) into the outward normal.
+    struct FaceGeometry
+    {
+      std::vector<FaceNode> nodes;
+      std::vector<double>   ts;
+      double                orientation;
+      // True if every node lies on the chord (to round-off): the normal is
+      // then that of the chord, exactly.
+      bool straight;
+
+      Point<2>
+      point(const double t) const
+      {
+        const Lagrange l = lagrange(ts, t);
+        Point<2>       x;
+        for (unsigned int i = 0; i < nodes.size(); ++i)
+          x += l.value[i] * nodes[i].position;
+        return x;
+      }
+
+      Tensor<1, 2>
+      derivative(const double t, const unsigned int order = 1) const
+      {
+        const Lagrange l = lagrange(ts, t);
+        Tensor<1, 2>   d;
+        for (unsigned int i = 0; i < nodes.size(); ++i)
+          d += (order == 1 ? l.first[i] : l.second[i]) * nodes[i].position;
+        return d;
+      }
+
+      Tensor<1, 2>
+      normal(const double t) const
+      {
+        const Tensor<1, 2> d =
+          straight ? nodes.back().position - nodes.front().position
+                   : derivative(t);
+        Tensor<1, 2> n;
+        n[0] = d[1];
+        n[1] = -d[0];
+        return orientation * n / n.norm();
+      }
+
+      // The same curve run the other way.
+      void
+      reverse()
+      {
+        std::reverse(nodes.begin(), nodes.end());
+        std::reverse(ts.begin(), ts.end());
+        for (double &t : ts)
+          t = 1 - t;
+        orientation = -orientation;
+      }
+
+      // Closest point of the face's curve to @p x: Newton on
+      // (x(t) - x) . x'(t) = 0 from the chord's projection; t may leave
+      // [0, 1] (the point is then beyond the face).
+      double
+      closest_point(const Point<2> &x) const
+      {
+        const Tensor<1, 2> chord =
+          nodes.back().position - nodes.front().position;
+        double t = ((x - nodes.front().position) * chord) / chord.norm_square();
+        for (unsigned int it = 0; it < 30 && nodes.size() > 2; ++it)
+          {
+            const Tensor<1, 2> r  = point(t) - x;
+            const Tensor<1, 2> d1 = derivative(t, 1);
+            const double       f  = r * d1;
+            const double       df = d1.norm_square() + r * derivative(t, 2);
+            if (df <= 0)
+              break;
+            const double step = f / df;
+            t                 = std::clamp(t - step, -1., 2.);
+            if (std::abs(step) < 1e-14)
+              break;
+          }
+        return t;
+      }
+    };
+
+    template <typename CellIterator, typename FaceIterator>
+    FaceGeometry
+    face_geometry(const Component    &component,
                   const unsigned int  c,
-                  const FaceIterator &face,
-                  const Tensor<1, 2> &tau)
+                  const CellIterator &cell,
+                  const FaceIterator &face)
     {
       std::vector<types::global_dof_index> dofs(
         component.fe().n_dofs_per_face());
       face->get_dof_indices(dofs);
-      const auto           &points    = component.support_points();
-      const auto           &direction = component.dof_directions();
-      std::vector<FaceNode> nodes;
+      const auto  &points    = component.support_points();
+      const auto  &direction = component.dof_directions();
+      const double size      = component.description().lower_left.distance(
+        component.description().upper_right);
+      FaceGeometry g;
       for (const types::global_dof_index dof : dofs)
         {
           bool found = false;
-          for (FaceNode &node : nodes)
-            if (node.position.distance(points[dof]) <
-                1e-12 * component.description().length())
+          for (FaceNode &node : g.nodes)
+            if (node.position.distance(points[dof]) < 1e-12 * size)
               {
                 node.dofs[direction[dof]] = dof;
                 found                     = true;
@@ -76,47 +175,47 @@ namespace FuzzyContact
             {
               FaceNode node{c, points[dof], {{0, 0}}};
               node.dofs[direction[dof]] = dof;
-              nodes.push_back(node);
+              g.nodes.push_back(node);
             }
         }
-      std::sort(nodes.begin(),
-                nodes.end(),
-                [&tau](const FaceNode &a, const FaceNode &b) {
-                  return tau * a.position < tau * b.position;
+      const Point<2>     v0    = face->vertex(0);
+      const Tensor<1, 2> chord = face->vertex(1) - v0;
+      std::sort(g.nodes.begin(),
+                g.nodes.end(),
+                [&](const FaceNode &a, const FaceNode &b) {
+                  return (a.position - v0) * chord < (b.position - v0) * chord;
                 });
-      return nodes;
+      const Tensor<1, 2> span =
+        g.nodes.back().position - g.nodes.front().position;
+      g.straight = true;
+      for (const FaceNode &node : g.nodes)
+        {
+          const Tensor<1, 2> r = node.position - g.nodes.front().position;
+          g.ts.push_back((r * span) / span.norm_square());
+          g.straight =
+            g.straight && std::abs(r[0] * span[1] - r[1] * span[0]) <=
+                            1e-12 * span.norm_square();
+        }
+      g.orientation         = 1;
+      const Point<2> middle = g.point(0.5);
+      if (g.normal(0.5) * (middle - cell->center()) < 0)
+        g.orientation = -1;
+      return g;
     }
 
-    // Values at t of the 1D Lagrange polynomials through the points ts.
-    std::vector<double>
-    lagrange_values(const std::vector<double> &ts, const double t)
+    // Every boundary face with boundary id @p id of component @p c.
+    std::vector<FaceGeometry>
+    faces_of(const Component         &component,
+             const unsigned int       c,
+             const types::boundary_id id)
     {
-      std::vector<double> values(ts.size(), 1.);
-      for (unsigned int k = 0; k < ts.size(); ++k)
-        for (unsigned int l = 0; l < ts.size(); ++l)
-          if (l != k)
-            values[k] *= (t - ts[l]) / (ts[k] - ts[l]);
-      return values;
-    }
-
-    // Local coordinates in [0, 1] of a segment's nodes along tau.
-    std::vector<double>
-    local_coordinates(const std::vector<FaceNode> &nodes,
-                      const Tensor<1, 2>          &tau)
-    {
-      const double        s0 = tau * nodes.front().position;
-      const double        s1 = tau * nodes.back().position;
-      std::vector<double> ts;
-      for (const FaceNode &node : nodes)
-        ts.push_back((tau * node.position - s0) / (s1 - s0));
-      return ts;
-    }
-
-    double
-    face_length(const ComponentDescription &d, const Face face)
-    {
-      return (face == Face::left || face == Face::right) ? d.height()
-                                                         : d.length();
+      std::vector<FaceGeometry> faces;
+      for (const auto &cell : component.dof_handler().active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              cell->face(f)->boundary_id() == id)
+            faces.push_back(face_geometry(component, c, cell, cell->face(f)));
+      return faces;
     }
 
     std::string
@@ -127,73 +226,39 @@ namespace FuzzyContact
       return s.str();
     }
 
-    // The master segments of face @p face of component @p master (index
-    // @p m), sorted along @p tau.
-    std::vector<MasterSegment>
-    master_segments_of(const Component    &master,
-                       const unsigned int  m,
-                       const Face          face,
-                       const Tensor<1, 2> &tau)
+    // A slave node: the node, its outward normal (the mean over the slave
+    // faces it lies on) and the length of face it stands for (the integral
+    // of its shape function along the slave face).
+    struct SlaveNode
     {
-      std::vector<MasterSegment> segments;
-      for (const auto &cell : master.dof_handler().active_cell_iterators())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              cell->face(f)->boundary_id() == static_cast<unsigned int>(face))
-            {
-              MasterSegment segment;
-              segment.nodes   = nodes_of_face(master, m, cell->face(f), tau);
-              segment.s_begin = tau * segment.nodes.front().position;
-              segment.s_end   = tau * segment.nodes.back().position;
-              segments.push_back(segment);
-            }
-      std::sort(segments.begin(),
-                segments.end(),
-                [](const MasterSegment &a, const MasterSegment &b) {
-                  return a.s_begin < b.s_begin;
-                });
-      Assert(!segments.empty(), ExcInternalError());
-      return segments;
-    }
+      FaceNode     node;
+      Tensor<1, 2> normal;
+      double       tributary = 0;
+    };
 
-    // The nodes of face @p face of component @p slave (index @p s), keyed by
-    // their x DoF, with the length of face each stands for (the integral of
-    // its shape function along the face); returns the extent of the face
-    // along @p tau.
-    std::pair<double, double>
-    slave_nodes_of(const Component                             &slave,
-                   const unsigned int                           s,
-                   const Face                                   face,
-                   const Tensor<1, 2>                          &tau,
-                   std::map<types::global_dof_index, FaceNode> &nodes,
-                   std::map<types::global_dof_index, double>   &tributary)
+    std::map<types::global_dof_index, SlaveNode>
+    slave_nodes_of(const std::vector<FaceGeometry> &faces,
+                   const unsigned int               degree)
     {
-      const QGauss<1> quadrature(slave.fe().degree + 1);
-      double          begin = std::numeric_limits<double>::max();
-      double          end   = -begin;
-      for (const auto &cell : slave.dof_handler().active_cell_iterators())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              cell->face(f)->boundary_id() == static_cast<unsigned int>(face))
-            {
-              const std::vector<FaceNode> face_nodes =
-                nodes_of_face(slave, s, cell->face(f), tau);
-              const std::vector<double> ts = local_coordinates(face_nodes, tau);
-              const double length = face_nodes.front().position.distance(
-                face_nodes.back().position);
-              for (unsigned int k = 0; k < face_nodes.size(); ++k)
-                {
-                  nodes[face_nodes[k].dofs[0]] = face_nodes[k];
-                  double integral              = 0;
-                  for (unsigned int q = 0; q < quadrature.size(); ++q)
-                    integral += lagrange_values(ts, quadrature.point(q)[0])[k] *
-                                quadrature.weight(q);
-                  tributary[face_nodes[k].dofs[0]] += integral * length;
-                }
-              begin = std::min(begin, tau * face_nodes.front().position);
-              end   = std::max(end, tau * face_nodes.back().position);
-            }
-      return {begin, end};
+      const QGauss<1>                              quadrature(degree + 1);
+      std::map<types::global_dof_index, SlaveNode> nodes;
+      for (const FaceGeometry &face : faces)
+        for (unsigned int k = 0; k < face.nodes.size(); ++k)
+          {
+            SlaveNode &node = nodes[face.nodes[k].dofs[0]];
+            node.node       = face.nodes[k];
+            node.normal += face.normal(face.ts[k]);
+            for (unsigned int q = 0; q < quadrature.size(); ++q)
+              {
+                const double t = quadrature.point(q)[0];
+                node.tributary += lagrange(face.ts, t).value[k] *
+                                  face.derivative(t).norm() *
+                                  quadrature.weight(q);
+              }
+          }
+      for (auto &[dof, node] : nodes)
+        node.normal /= node.normal.norm();
+      return nodes;
     }
   } // namespace
 
@@ -224,18 +289,21 @@ namespace FuzzyContact
       {
         const ContactPairDescription &pair = scene.contact_pairs[p];
         pair_names_.push_back(pair.name);
+        const unsigned int m = scene.component_index(pair.master_component);
         penetration_tolerance_.push_back(
           penetration_tolerance *
-          face_length(
-            scene.components[scene.component_index(pair.master_component)],
-            pair.master_face));
+          components[m]->boundary_length(scene.components[m].boundary_id(
+            pair.master_face,
+            "Contact " + pair.name + ": master face")));
         add_pair(scene, components, p);
       }
     build_operators(components);
   }
 
 
-  // Projects every node of the pair's slave face onto its master face.
+  // Projects every node of the pair's slave face onto its master face: the
+  // closest point on the master segments (curved ones included), with the
+  // master's normal and tangent there.
   void
   ContactInterface::add_pair(const Scene                          &scene,
                              const std::vector<const Component *> &components,
@@ -247,68 +315,106 @@ namespace FuzzyContact
     const unsigned int m      = scene.component_index(pair.master_component);
     const Component   &slave  = *components[s];
     const Component   &master = *components[m];
+    const std::string  faces_named =
+      "the slave face (" + pair.slave_component + " " + pair.slave_face +
+      ") and the master face (" + pair.master_component + " " +
+      pair.master_face + ")";
 
-    const Tensor<1, 2> n_master = outward_normal(pair.master_face);
-    const Tensor<1, 2> n_slave  = outward_normal(pair.slave_face);
-    const Tensor<1, 2> tau      = tangent_of(n_master);
-    AssertThrow(n_master * n_slave < -0.5,
-                ExcMessage(where + ": the slave face (" + pair.slave_component +
-                           " " + to_string(pair.slave_face) +
-                           ") and the master face (" + pair.master_component +
-                           " " + to_string(pair.master_face) +
-                           ") cannot touch: their outward normals are not "
-                           "opposite."));
+    std::vector<FaceGeometry> master_faces =
+      faces_of(master,
+               m,
+               scene.components[m].boundary_id(pair.master_face,
+                                               where + ": master face"));
+    const std::vector<FaceGeometry> slave_faces =
+      faces_of(slave,
+               s,
+               scene.components[s].boundary_id(pair.slave_face,
+                                               where + ": slave face"));
+    Assert(!master_faces.empty() && !slave_faces.empty(), ExcInternalError());
 
-    const std::vector<MasterSegment> segments =
-      master_segments_of(master, m, pair.master_face, tau);
-    const double master_begin = segments.front().s_begin;
-    const double master_end   = segments.back().s_end;
-    const double s_tolerance  = 1e-10 * (master_end - master_begin);
+    // The pair's tangent (from the master's mean normal) orders the
+    // segments and measures positions along the face for the reports.
+    Tensor<1, 2> mean_normal;
+    for (const FaceGeometry &face : master_faces)
+      mean_normal += face.normal(0.5) * face.nodes.front().position.distance(
+                                          face.nodes.back().position);
+    const Tensor<1, 2> tau = tangent_of(mean_normal / mean_normal.norm());
+    for (FaceGeometry &face : master_faces)
+      if (tau * (face.nodes.back().position - face.nodes.front().position) < 0)
+        face.reverse();
+    std::vector<unsigned int>  order(master_faces.size());
+    std::vector<MasterSegment> segments;
+    for (const FaceGeometry &face : master_faces)
+      segments.push_back(MasterSegment{face.nodes,
+                                       tau * face.nodes.front().position,
+                                       tau * face.nodes.back().position});
+    for (unsigned int i = 0; i < order.size(); ++i)
+      order[i] = i;
+    std::sort(order.begin(),
+              order.end(),
+              [&](const unsigned a, const unsigned b) {
+                return std::min(segments[a].s_begin, segments[a].s_end) <
+                       std::min(segments[b].s_begin, segments[b].s_end);
+              });
 
-    // Slave nodes with the length of slave face each stands for.
-    std::map<types::global_dof_index, FaceNode> slave_nodes;
-    std::map<types::global_dof_index, double>   tributary;
-    const auto [slave_begin, slave_end] =
-      slave_nodes_of(slave, s, pair.slave_face, tau, slave_nodes, tributary);
+    const std::map<types::global_dof_index, SlaveNode> slave_nodes =
+      slave_nodes_of(slave_faces, slave.fe().degree);
+    double slave_begin = std::numeric_limits<double>::max();
+    double slave_end   = -slave_begin;
+    bool   any_facing = false, any_opposite = false;
+    for (const auto &[dof, node] : slave_nodes)
+      {
+        slave_begin = std::min(slave_begin, tau * node.node.position);
+        slave_end   = std::max(slave_end, tau * node.node.position);
+      }
     slave_face_centre_.push_back(0.5 * (slave_begin + slave_end));
 
     const double tolerance = penetration_tolerance_[p];
     unsigned int n_added   = 0;
     for (const auto &[dof, slave_node] : slave_nodes)
       {
-        const double s_slave = tau * slave_node.position;
-        if (s_slave < master_begin - s_tolerance ||
-            s_slave > master_end + s_tolerance)
+        // The closest point over all master segments whose curve it falls
+        // on (within round-off of the ends).
+        const FaceGeometry *best   = nullptr;
+        double              best_t = 0, best_distance = 0;
+        for (const unsigned int i : order)
+          {
+            const FaceGeometry &face = master_faces[i];
+            const double t = face.closest_point(slave_node.node.position);
+            if (t < -1e-10 || t > 1 + 1e-10)
+              continue;
+            const double distance = face.point(std::clamp(t, 0., 1.))
+                                      .distance(slave_node.node.position);
+            if (best == nullptr || distance < best_distance)
+              {
+                best          = &face;
+                best_t        = std::clamp(t, 0., 1.);
+                best_distance = distance;
+              }
+          }
+        if (best == nullptr)
           continue; // not opposite the master face
-        const auto segment =
-          std::find_if(segments.begin(),
-                       segments.end(),
-                       [&](const MasterSegment &seg) {
-                         return s_slave >= seg.s_begin - s_tolerance &&
-                                s_slave <= seg.s_end + s_tolerance;
-                       });
-        Assert(segment != segments.end(), ExcInternalError());
+        any_opposite                = true;
+        const Tensor<1, 2> n_master = best->normal(best_t);
+        if (slave_node.normal * n_master < -0.5)
+          any_facing = true;
+        if (slave_node.normal * n_master >= 0)
+          continue; // this part of the slave face looks away
 
         ContactNode node;
-        node.pair         = p;
-        node.slave        = slave_node;
-        node.master_nodes = segment->nodes;
-        node.xi           = std::clamp((s_slave - segment->s_begin) /
-                               (segment->s_end - segment->s_begin),
-                             0.,
-                             1.);
-        node.shape_values =
-          lagrange_values(local_coordinates(segment->nodes, tau), node.xi);
-        node.projection = segment->nodes.front().position +
-                          node.xi * (segment->nodes.back().position -
-                                     segment->nodes.front().position);
+        node.pair                 = p;
+        node.slave                = slave_node.node;
+        node.master_nodes         = best->nodes;
+        node.xi                   = best_t;
+        node.shape_values         = lagrange(best->ts, best_t).value;
+        node.projection           = best->point(best_t);
         node.normal               = n_master;
-        node.tangent              = tau;
+        node.tangent              = tangent_of(n_master);
         node.friction_coefficient = pair.friction_coefficient;
-        node.tributary_length     = tributary[dof];
+        node.tributary_length     = slave_node.tributary;
 
         const double geometric_gap =
-          n_master * (slave_node.position - node.projection);
+          n_master * (slave_node.node.position - node.projection);
         node.initial_gap =
           pair.has_initial_gap ? pair.initial_gap : geometric_gap;
         if (node.initial_gap < -tolerance)
@@ -316,7 +422,7 @@ namespace FuzzyContact
             std::ostringstream message;
             message << where << ": initial penetration of " << -node.initial_gap
                     << " m at the slave node "
-                    << point_string(slave_node.position) << " (";
+                    << point_string(slave_node.node.position) << " (";
             if (pair.has_initial_gap)
               message << "the declared initial gap is " << pair.initial_gap;
             else
@@ -331,8 +437,8 @@ namespace FuzzyContact
 
         // A node whose slave and master DoFs are all clamped cannot move
         // relative to the master: it is no candidate.
-        bool can_move = !slave.is_constrained(slave_node.dofs[0]) ||
-                        !slave.is_constrained(slave_node.dofs[1]);
+        bool can_move = !slave.is_constrained(node.slave.dofs[0]) ||
+                        !slave.is_constrained(node.slave.dofs[1]);
         for (unsigned int i = 0; i < node.master_nodes.size(); ++i)
           if (std::abs(node.shape_values[i]) > 1e-14)
             for (unsigned int d = 0; d < 2; ++d)
@@ -344,14 +450,28 @@ namespace FuzzyContact
         nodes_.push_back(node);
         ++n_added;
       }
+    AssertThrow(!any_opposite || any_facing || n_added > 0,
+                ExcMessage(where + ": " + faces_named +
+                           " cannot touch: their outward normals are not "
+                           "opposite."));
     AssertThrow(n_added > 0,
-                ExcMessage(
-                  where + ": no node of the slave face (" +
-                  pair.slave_component + " " + to_string(pair.slave_face) +
-                  ") lies opposite the master face (" + pair.master_component +
-                  " " + to_string(pair.master_face) +
-                  ") where it could move; the faces cannot touch."));
-    segments_.push_back(std::move(segments));
+                ExcMessage(where + ": no node of the slave face (" +
+                           pair.slave_component + " " + pair.slave_face +
+                           ") lies opposite the master face (" +
+                           pair.master_component + " " + pair.master_face +
+                           ") where it could move; the faces cannot touch."));
+    std::vector<MasterSegment> sorted;
+    for (const unsigned int i : order)
+      {
+        MasterSegment segment = segments[i];
+        if (segment.s_begin > segment.s_end)
+          {
+            std::reverse(segment.nodes.begin(), segment.nodes.end());
+            std::swap(segment.s_begin, segment.s_end);
+          }
+        sorted.push_back(segment);
+      }
+    segments_.push_back(std::move(sorted));
   }
 
 

@@ -17,11 +17,12 @@ namespace FuzzyContact
       std::optional<double>
       clamp_position(const ComponentDescription &c)
       {
-        if (c.clamped_faces.size() != 1)
+        if (!c.is_rectangle() || c.clamped_faces.size() != 1 ||
+            !c.supports.empty())
           return {};
-        if (c.clamped_faces[0] == Face::left)
+        if (c.clamped_faces[0] == "left")
           return c.lower_left[0];
-        if (c.clamped_faces[0] == Face::right)
+        if (c.clamped_faces[0] == "right")
           return c.upper_right[0];
         return {};
       }
@@ -92,8 +93,8 @@ namespace FuzzyContact
         return {};
       const ContactPairDescription &pair = scene.contact_pairs[0];
       const bool                    faces =
-        (pair.slave_face == Face::bottom && pair.master_face == Face::top) ||
-        (pair.slave_face == Face::top && pair.master_face == Face::bottom);
+        (pair.slave_face == "bottom" && pair.master_face == "top") ||
+        (pair.slave_face == "top" && pair.master_face == "bottom");
       if (!faces)
         return {};
       const ComponentDescription &slave =

@@ -1,5 +1,6 @@
 #include <fuzzycontact/base/input.h>
 #include <fuzzycontact/fe/component.h>
+#include <fuzzycontact/scene/mesh_file.h>
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -7,6 +8,7 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -42,14 +44,6 @@ namespace FuzzyContact
 
   namespace
   {
-    // Face-length over which an edge load is spread.
-    double
-    face_length(const ComponentDescription &d, const Face face)
-    {
-      return (face == Face::left || face == Face::right) ? d.height()
-                                                         : d.length();
-    }
-
     // Element loop shared by the zone-wise and the direct assembly: for the
     // cell of zone z, target(z) names the stiffness and mass matrices to add
     // into and the modulus and density to scale them with.
@@ -63,7 +57,8 @@ namespace FuzzyContact
 
     template <typename TargetFunction>
     void
-    assemble_elasticity(const DoFHandler<2>             &dof_handler,
+    assemble_elasticity(const Mapping<2>                &mapping,
+                        const DoFHandler<2>             &dof_handler,
                         const AffineConstraints<double> &constraints,
                         const ComponentDescription      &description,
                         const PlaneModel                 model,
@@ -71,7 +66,8 @@ namespace FuzzyContact
     {
       const FiniteElement<2>              &fe = dof_handler.get_fe();
       const QGauss<2>                      quadrature(fe.degree + 1);
-      FEValues<2>                          fe_values(fe,
+      FEValues<2>                          fe_values(mapping,
+                            fe,
                             quadrature,
                             update_values | update_gradients |
                               update_JxW_values);
@@ -146,6 +142,13 @@ namespace FuzzyContact
       , fe_(FE_Q<2>(description.fe_degree), 2)
       , dof_handler_(triangulation_)
   {
+    // Curved boundaries need a mapping of the element's degree to put the
+    // nodes and quadrature points on the arcs; straight ones are exact
+    // with the bilinear mapping.
+    if (description_.mesh.arcs.empty())
+      mapping_ = std::make_unique<MappingQ1<2>>();
+    else
+      mapping_ = std::make_unique<MappingQ<2>>(description_.fe_degree);
     AssertThrow(description_.zones.size() <= 255,
                 ExcMessage("Component " + name() +
                            ": at most 255 material zones are supported."));
@@ -172,6 +175,43 @@ namespace FuzzyContact
   }
 
 
+  // A mesh file's cells take the index of the zone of their physical
+  // surface as material id (every cell the implicit zone 0).
+  void
+  Component::make_mesh_from_file()
+  {
+    const ComponentDescription &d     = description_;
+    const std::string           where = "Component " + name() + ": mesh file";
+    create_mesh(d.mesh, d.scale, triangulation_, where);
+    std::map<types::material_id, unsigned int> zone_of;
+    for (unsigned int z = 0; z < d.zones.size(); ++z)
+      zone_of[d.zones[z].material_id] = z;
+    for (const auto &cell : triangulation_.active_cell_iterators())
+      {
+        if (d.implicit_zone)
+          {
+            cell->set_material_id(0);
+            continue;
+          }
+        const auto z = zone_of.find(cell->material_id());
+        if (z == zone_of.end())
+          {
+            std::ostringstream message;
+            message << "Component " << name() << ": the cell centred at ("
+                    << cell->center()[0] << ", " << cell->center()[1]
+                    << ") of <" << d.mesh_file
+                    << "> lies in no zone the component lists (physical "
+                       "surface tag "
+                    << cell->material_id() << "); list every physical "
+                    << "surface of the file in 'zones' (it has: "
+                    << d.mesh.zone_names() << "), or none.";
+            AssertThrow(false, ExcMessage(message.str()));
+          }
+        cell->set_material_id(z->second);
+      }
+  }
+
+
   // The rectangle, with boundary ids left = 0, right = 1, bottom = 2,
   // top = 3, and the zone index of each cell as its material id. A zone whose
   // edges do not follow mesh lines would silently be a different zone, so the
@@ -180,6 +220,12 @@ namespace FuzzyContact
   Component::make_mesh(const unsigned int n_refinements)
   {
     const ComponentDescription &d = description_;
+    if (!d.is_rectangle())
+      {
+        make_mesh_from_file();
+        triangulation_.refine_global(n_refinements);
+        return;
+      }
     GridGenerator::subdivided_hyper_rectangle(
       triangulation_,
       std::vector<unsigned int>{d.subdivisions[0], d.subdivisions[1]},
@@ -251,11 +297,22 @@ namespace FuzzyContact
     dof_handler_.distribute_dofs(fe_);
 
     constraints_.clear();
-    for (const Face face : description_.clamped_faces)
-      VectorTools::interpolate_boundary_values(dof_handler_,
-                                               static_cast<unsigned int>(face),
-                                               Functions::ZeroFunction<2>(2),
-                                               constraints_);
+    for (const Support &support : description_.all_supports())
+      {
+        const std::string where =
+          "Component " + name() + ", support " + support.name;
+        AssertThrow(support.displacement.norm() == 0,
+                    ExcMessage(where + ": a non-zero prescribed displacement "
+                                       "is not available yet; hold the face "
+                                       "with a zero displacement."));
+        VectorTools::interpolate_boundary_values(
+          *mapping_,
+          dof_handler_,
+          description_.boundary_id(support.face, where + ": face"),
+          Functions::ZeroFunction<2>(2),
+          constraints_,
+          ComponentMask(std::vector<bool>{support.fixed[0], support.fixed[1]}));
+      }
     constraints_.close();
 
     DynamicSparsityPattern dsp(dof_handler_.n_dofs());
@@ -266,7 +323,7 @@ namespace FuzzyContact
     sparsity_pattern_.copy_from(dsp);
 
     support_points_.resize(dof_handler_.n_dofs());
-    DoFTools::map_dofs_to_support_points(MappingQ1<2>(),
+    DoFTools::map_dofs_to_support_points(*mapping_,
                                          dof_handler_,
                                          support_points_);
 
@@ -293,6 +350,7 @@ namespace FuzzyContact
         zone_mass_[z].reinit(sparsity_pattern_);
       }
     assemble_elasticity(
+      *mapping_,
       dof_handler_,
       constraints_,
       description_,
@@ -312,6 +370,7 @@ namespace FuzzyContact
     K.reinit(sparsity_pattern_);
     M.reinit(sparsity_pattern_);
     assemble_elasticity(
+      *mapping_,
       dof_handler_,
       constraints_,
       description_,
@@ -329,9 +388,11 @@ namespace FuzzyContact
   Component::assemble_loads()
   {
     const QGauss<1>                      face_quadrature(fe_.degree + 1);
-    FEFaceValues<2>                      fe_face_values(fe_,
+    FEFaceValues<2>                      fe_face_values(*mapping_,
+                                   fe_,
                                    face_quadrature,
-                                   update_values | update_JxW_values);
+                                   update_values | update_JxW_values |
+                                     update_normal_vectors);
     const FEValuesExtractors::Vector     displacement(0);
     const unsigned int                   n = fe_.n_dofs_per_cell();
     Vector<double>                       cell_f(n);
@@ -341,21 +402,32 @@ namespace FuzzyContact
     load_.reinit(dof_handler_.n_dofs());
     for (const EdgeLoad &load : description_.loads)
       {
-        Vector<double>     f(dof_handler_.n_dofs());
-        const Tensor<1, 2> traction_times_t =
-          load.direction / face_length(description_, load.face);
+        const types::boundary_id id =
+          description_.boundary_id(load.face,
+                                   "Component " + name() + ", load " +
+                                     load.name);
+        const double   length = boundary_length(id);
+        Vector<double> f(dof_handler_.n_dofs());
         for (const auto &cell : dof_handler_.active_cell_iterators())
           for (const auto &face : cell->face_iterators())
-            if (face->at_boundary() &&
-                face->boundary_id() == static_cast<unsigned int>(load.face))
+            if (face->at_boundary() && face->boundary_id() == id)
               {
                 fe_face_values.reinit(cell, face);
                 cell_f = 0;
                 for (const unsigned int q :
                      fe_face_values.quadrature_point_indices())
-                  for (unsigned int i = 0; i < n; ++i)
-                    cell_f(i) += fe_face_values[displacement].value(i, q) *
-                                 traction_times_t * fe_face_values.JxW(q);
+                  {
+                    // Per unit length: F d / L for a total force, -p t n
+                    // for a pressure (per Pa).
+                    const Tensor<1, 2> traction_times_t =
+                      load.is_pressure
+                        ? Tensor<1, 2>(-description_.thickness *
+                                       fe_face_values.normal_vector(q))
+                        : load.direction / length;
+                    for (unsigned int i = 0; i < n; ++i)
+                      cell_f(i) += fe_face_values[displacement].value(i, q) *
+                                   traction_times_t * fe_face_values.JxW(q);
+                  }
                 cell->get_dof_indices(dofs);
                 constraints_.distribute_local_to_global(cell_f, dofs, f);
               }
@@ -402,6 +474,31 @@ namespace FuzzyContact
     zone_moduli_      = moduli;
     zone_densities_   = densities;
     matrices_current_ = false;
+  }
+
+
+  double
+  Component::boundary_length(const types::boundary_id id) const
+  {
+    const QGauss<1> quadrature(fe_.degree + 1);
+    FEFaceValues<2> values(*mapping_, fe_, quadrature, update_JxW_values);
+    double          length = 0;
+    for (const auto &cell : dof_handler_.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary() && face->boundary_id() == id)
+          {
+            values.reinit(cell, face);
+            for (const unsigned int q : values.quadrature_point_indices())
+              length += values.JxW(q);
+          }
+    return length;
+  }
+
+
+  const Mapping<2> &
+  Component::mapping() const
+  {
+    return *mapping_;
   }
 
 

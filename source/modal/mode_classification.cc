@@ -45,9 +45,11 @@ namespace FuzzyContact
   bool
   beam_theory_applies(const ComponentDescription &component)
   {
-    const bool cantilever = component.clamped_faces.size() == 1 &&
-                            (component.clamped_faces[0] == Face::left ||
-                             component.clamped_faces[0] == Face::right);
+    const bool cantilever = component.is_rectangle() &&
+                            component.supports.empty() &&
+                            component.clamped_faces.size() == 1 &&
+                            (component.clamped_faces[0] == "left" ||
+                             component.clamped_faces[0] == "right");
     bool single_material = true;
     for (const MaterialZone &z : component.zones)
       single_material = single_material &&

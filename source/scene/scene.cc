@@ -36,21 +36,42 @@ namespace FuzzyContact
                       const ComponentDescription &component)
     {
       prm.enter_subsection(component_section(component.name));
-      prm.declare_entry("lower left corner",
-                        "0, 0",
-                        Patterns::List(Patterns::Double(), 2, 2),
-                        "x, y of the lower left corner [m].",
-                        /*has_to_be_set=*/true);
-      prm.declare_entry("upper right corner",
-                        "1, 1",
-                        Patterns::List(Patterns::Double(), 2, 2),
-                        "x, y of the upper right corner [m].",
-                        /*has_to_be_set=*/true);
-      prm.declare_entry("subdivisions",
-                        "1, 1",
-                        Patterns::List(Patterns::Integer(), 2, 2),
-                        "Number of cells along x and along y.",
-                        /*has_to_be_set=*/true);
+      prm.declare_entry("mesh file",
+                        "",
+                        Patterns::Anything(),
+                        "A Gmsh mesh (.msh) or geometry (.geo), relative to "
+                        "the scene file; empty: a rectangle (corners and "
+                        "subdivisions).");
+      prm.declare_entry("scale",
+                        "1",
+                        Patterns::Double(),
+                        "Mesh-file units to metres (1e-3 for mm).");
+      if (component.mesh_file.empty())
+        {
+          prm.declare_entry("lower left corner",
+                            "0, 0",
+                            Patterns::List(Patterns::Double(), 2, 2),
+                            "x, y of the lower left corner [m].",
+                            /*has_to_be_set=*/true);
+          prm.declare_entry("upper right corner",
+                            "1, 1",
+                            Patterns::List(Patterns::Double(), 2, 2),
+                            "x, y of the upper right corner [m].",
+                            /*has_to_be_set=*/true);
+          prm.declare_entry("subdivisions",
+                            "1, 1",
+                            Patterns::List(Patterns::Integer(), 2, 2),
+                            "Number of cells along x and along y.",
+                            /*has_to_be_set=*/true);
+        }
+      else
+        for (const char *key :
+             {"lower left corner", "upper right corner", "subdivisions"})
+          prm.declare_entry(key,
+                            "",
+                            Patterns::Anything(),
+                            "Rectangles only: must stay empty with a mesh "
+                            "file.");
       prm.declare_entry("fe degree",
                         "2",
                         Patterns::Integer(),
@@ -75,10 +96,20 @@ namespace FuzzyContact
                         Patterns::Double(),
                         "Density [kg/m^3] of zones that do not set their "
                         "own.");
-      prm.declare_entry("clamped faces",
+      prm.declare_entry(
+        "clamped faces",
+        "",
+        *(component.mesh_file.empty()
+            ? Patterns::List(Patterns::Selection(face_names), 0, 4).clone()
+            : Patterns::Anything().clone()),
+        "Faces whose displacements are zero (a mesh file: "
+        "names of its physical curves).");
+      prm.declare_entry("supports",
                         "",
-                        Patterns::List(Patterns::Selection(face_names), 0, 4),
-                        "Faces whose displacements are zero.");
+                        Patterns::Anything(),
+                        "Comma-separated names of supports (rollers, "
+                        "symmetry lines, prescribed displacements), each "
+                        "with a subsection 'Support <name>'.");
       prm.declare_entry("zones",
                         "",
                         Patterns::Anything(),
@@ -125,17 +156,43 @@ namespace FuzzyContact
           prm.enter_subsection("Load " + load.name);
           prm.declare_entry("face",
                             "right",
-                            Patterns::Selection(face_names),
+                            *(component.mesh_file.empty()
+                                ? Patterns::Selection(face_names).clone()
+                                : Patterns::Anything().clone()),
                             "Face that carries the load.");
           prm.declare_entry("total force",
                             "0",
                             Patterns::Double(),
                             "Resultant of the load [N], spread uniformly "
                             "over the face.");
+          prm.declare_entry("pressure",
+                            "",
+                            Patterns::Anything(),
+                            "Instead of a total force: a pressure [Pa] "
+                            "normal to the face, pushing into the body.");
           prm.declare_entry("direction",
                             "0, -1",
                             Patterns::List(Patterns::Double(), 2, 2),
                             "Direction of the resultant (normalised).");
+          prm.leave_subsection();
+        }
+      for (const Support &support : component.supports)
+        {
+          prm.enter_subsection("Support " + support.name);
+          prm.declare_entry("face",
+                            "",
+                            Patterns::Anything(),
+                            "Face that is supported.",
+                            /*has_to_be_set=*/true);
+          prm.declare_entry("fixed components",
+                            "x, y",
+                            Patterns::Selection("x|y|x, y|x,y|y, x|y,x"),
+                            "Displacement components held: x, y or x, y.");
+          prm.declare_entry("displacement",
+                            "0, 0",
+                            Patterns::List(Patterns::Double(), 2, 2),
+                            "Prescribed x, y displacement [m]; only the "
+                            "fixed components are used.");
           prm.leave_subsection();
         }
       prm.leave_subsection();
@@ -155,8 +212,10 @@ namespace FuzzyContact
                         /*has_to_be_set=*/true);
       prm.declare_entry("slave face",
                         "bottom",
-                        Patterns::Selection(face_names),
-                        "Face of the slave component.");
+                        Patterns::Anything(),
+                        "Face of the slave component (a rectangle: left, "
+                        "right, bottom or top; a mesh file: a physical "
+                        "curve).");
       prm.declare_entry("master component",
                         "",
                         Patterns::Anything(),
@@ -164,7 +223,7 @@ namespace FuzzyContact
                         /*has_to_be_set=*/true);
       prm.declare_entry("master face",
                         "top",
-                        Patterns::Selection(face_names),
+                        Patterns::Anything(),
                         "Face of the master component.");
       prm.declare_entry("friction coefficient",
                         "0",
@@ -193,7 +252,7 @@ namespace FuzzyContact
       if (component.zones.empty() || component.implicit_zone)
         {
           // One implicit zone over everything, with the component's
-          // material.
+          // material (in a mesh file: over every physical surface).
           component.implicit_zone = true;
           component.zones         = {
                     MaterialZone{"body",
@@ -220,12 +279,28 @@ namespace FuzzyContact
                                        ">."));
                 return r;
               };
-            zone.x_range        = range_or_all("x range",
+            zone.x_range = range_or_all("x range",
                                         component.lower_left[0],
                                         component.upper_right[0]);
-            zone.y_range        = range_or_all("y range",
+            zone.y_range = range_or_all("y range",
                                         component.lower_left[1],
                                         component.upper_right[1]);
+            if (!component.is_rectangle())
+              {
+                for (const char *key : {"x range", "y range"})
+                  AssertThrow(Utilities::trim(prm.get(key)).empty(),
+                              ExcMessage(zwhere + ": " + key +
+                                         " is for rectangles; in a mesh "
+                                         "file a zone is the physical "
+                                         "surface of its name."));
+                const auto id = component.mesh.material_ids.find(zone.name);
+                AssertThrow(id != component.mesh.material_ids.end(),
+                            ExcMessage(zwhere + ": <" + component.mesh.file +
+                                       "> has no physical surface called <" +
+                                       zone.name + ">; it has: " +
+                                       component.mesh.zone_names() + "."));
+                zone.material_id = id->second;
+              }
             const auto value_or = [&](const std::string &key,
                                       const double       fallback) {
               const std::string text = Utilities::trim(prm.get(key));
@@ -250,9 +325,21 @@ namespace FuzzyContact
         {
           const std::string lwhere = where + ", load " + load.name;
           prm.enter_subsection("Load " + load.name);
-          load.face = face_from_string(prm.get("face"), lwhere + ": face");
+          load.face = Utilities::trim(prm.get("face"));
+          component.boundary_id(load.face, lwhere + ": face");
           load.total_force = Input::finite(prm.get_double("total force"),
                                            lwhere + ": total force");
+          const std::string pressure = Utilities::trim(prm.get("pressure"));
+          load.is_pressure           = !pressure.empty();
+          if (load.is_pressure)
+            {
+              AssertThrow(load.total_force == 0,
+                          ExcMessage(lwhere +
+                                     ": set either total force or pressure, "
+                                     "not both."));
+              load.total_force =
+                Input::to_double(pressure, lwhere + ": pressure");
+            }
           const auto d =
             read_pair(prm.get("direction"), lwhere + ": direction");
           const double norm = std::hypot(d[0], d[1]);
@@ -266,14 +353,61 @@ namespace FuzzyContact
     }
 
 
-    // One component: its rectangle, mesh, element, material, clamps, zones
-    // and loads.
+    // The supports of a component.
     void
-    parse_component(ParameterHandler &prm, ComponentDescription &component)
+    parse_supports(ParameterHandler     &prm,
+                   ComponentDescription &component,
+                   const std::string    &where)
     {
-      const std::string where = "Component " + component.name;
-      prm.enter_subsection(component_section(component.name));
+      for (Support &support : component.supports)
+        {
+          const std::string swhere = where + ", support " + support.name;
+          prm.enter_subsection("Support " + support.name);
+          support.face = Utilities::trim(prm.get("face"));
+          component.boundary_id(support.face, swhere + ": face");
+          const std::string fixed = prm.get("fixed components");
+          support.fixed           = {{fixed.find('x') != std::string::npos,
+                                      fixed.find('y') != std::string::npos}};
+          const auto d =
+            read_pair(prm.get("displacement"), swhere + ": displacement");
+          for (unsigned int i = 0; i < 2; ++i)
+            support.displacement[i] =
+              support.fixed[i] ? Input::finite(d[i], swhere + ": displacement")
+                               : 0.;
+          prm.leave_subsection();
+        }
+    }
 
+
+    // The geometry of a component: a mesh file, or a rectangle's corners and
+    // subdivisions.
+    void
+    parse_geometry(ParameterHandler     &prm,
+                   ComponentDescription &component,
+                   const std::string    &where,
+                   const std::string    &scene_file)
+    {
+      const std::string file = Utilities::trim(prm.get("mesh file"));
+      component.scale =
+        Input::positive(prm.get_double("scale"), where + ": scale");
+      if (!file.empty())
+        {
+          for (const char *key :
+               {"lower left corner", "upper right corner", "subdivisions"})
+            AssertThrow(Utilities::trim(prm.get(key)).empty(),
+                        ExcMessage(where + ": " + key +
+                                   " is for rectangles; a component with a "
+                                   "mesh file takes its geometry from the "
+                                   "file."));
+          component.mesh_file    = Input::resolve_relative_to(file, scene_file);
+          component.mesh         = read_mesh_file(component.mesh_file,
+                                          component.scale,
+                                          where + ": mesh file");
+          component.lower_left   = component.mesh.lower_left;
+          component.upper_right  = component.mesh.upper_right;
+          component.subdivisions = {{1, 1}};
+          return;
+        }
       const auto lower =
         read_pair(prm.get("lower left corner"), where + ": lower left corner");
       const auto upper      = read_pair(prm.get("upper right corner"),
@@ -293,6 +427,19 @@ namespace FuzzyContact
                                  prm.get("subdivisions") + ">."));
           component.subdivisions[d] = static_cast<unsigned int>(n);
         }
+    }
+
+
+    // One component: its geometry, element, material, clamps, supports,
+    // zones and loads.
+    void
+    parse_component(ParameterHandler     &prm,
+                    ComponentDescription &component,
+                    const std::string    &scene_file)
+    {
+      const std::string where = "Component " + component.name;
+      prm.enter_subsection(component_section(component.name));
+      parse_geometry(prm, component, where, scene_file);
 
       const long degree = prm.get_integer("fe degree");
       AssertThrow(degree >= 1 && degree <= 4,
@@ -310,15 +457,16 @@ namespace FuzzyContact
       for (const std::string &f :
            Utilities::split_string_list(prm.get("clamped faces"), ','))
         {
-          const Face face = face_from_string(f, where + ": clamped faces");
-          for (const Face other : component.clamped_faces)
-            AssertThrow(other != face,
+          component.boundary_id(f, where + ": clamped faces");
+          for (const std::string &other : component.clamped_faces)
+            AssertThrow(other != f,
                         ExcMessage(where + ": clamped faces lists <" + f +
                                    "> twice."));
-          component.clamped_faces.push_back(face);
+          component.clamped_faces.push_back(f);
         }
       parse_zones(prm, component, where, E, nu, rho);
       parse_loads(prm, component, where);
+      parse_supports(prm, component, where);
       prm.leave_subsection();
     }
 
@@ -331,10 +479,8 @@ namespace FuzzyContact
       prm.enter_subsection("Contact " + pair.name);
       pair.slave_component  = Utilities::trim(prm.get("slave component"));
       pair.master_component = Utilities::trim(prm.get("master component"));
-      pair.slave_face =
-        face_from_string(prm.get("slave face"), where + ": slave face");
-      pair.master_face =
-        face_from_string(prm.get("master face"), where + ": master face");
+      pair.slave_face       = Utilities::trim(prm.get("slave face"));
+      pair.master_face      = Utilities::trim(prm.get("master face"));
       pair.friction_coefficient =
         Input::non_negative(prm.get_double("friction coefficient"),
                             where + ": friction coefficient");
@@ -394,6 +540,65 @@ namespace FuzzyContact
   }
 
 
+  std::optional<Face>
+  rectangle_side(const std::string &name)
+  {
+    const std::string n = Utilities::trim(name);
+    for (const Face f : {Face::left, Face::right, Face::bottom, Face::top})
+      if (n == to_string(f))
+        return f;
+    return std::nullopt;
+  }
+
+
+  bool
+  ComponentDescription::is_rectangle() const
+  {
+    return mesh_file.empty();
+  }
+
+
+  types::boundary_id
+  ComponentDescription::boundary_id(const std::string &face,
+                                    const std::string &what) const
+  {
+    if (is_rectangle())
+      return static_cast<types::boundary_id>(face_from_string(face, what));
+    const auto id = mesh.boundary_ids.find(Utilities::trim(face));
+    AssertThrow(id != mesh.boundary_ids.end(),
+                ExcMessage(what + ": <" + mesh.file +
+                           "> has no physical curve called <" +
+                           Utilities::trim(face) +
+                           ">; it has: " + mesh.face_names() + "."));
+    return id->second;
+  }
+
+
+  std::vector<Support>
+  ComponentDescription::all_supports() const
+  {
+    std::vector<Support> all;
+    for (const std::string &face : clamped_faces)
+      all.push_back(Support{"clamp " + face, face, {{true, true}}, {}});
+    all.insert(all.end(), supports.begin(), supports.end());
+    return all;
+  }
+
+
+  unsigned int
+  ComponentDescription::n_mesh_faces(const std::string &face) const
+  {
+    if (is_rectangle())
+      {
+        const Face f = face_from_string(face, "Component " + name);
+        return (f == Face::left || f == Face::right) ? subdivisions[1]
+                                                     : subdivisions[0];
+      }
+    const auto n = mesh.boundary_faces.find(boundary_id(face, name));
+    return n == mesh.boundary_faces.end() ? 0 : n->second;
+  }
+
+
   double
   ComponentDescription::length() const
   {
@@ -426,7 +631,19 @@ namespace FuzzyContact
   {
     AssertIndexRange(z, zones.size());
     const MaterialZone &zone = zones[z];
-    const double        dx   = std::min(zone.x_range[1], upper_right[0]) -
+    if (!is_rectangle())
+      {
+        if (implicit_zone)
+          {
+            double area = 0;
+            for (const auto &[id, a] : mesh.material_areas)
+              area += a;
+            return area;
+          }
+        const auto a = mesh.material_areas.find(zone.material_id);
+        return a == mesh.material_areas.end() ? 0. : a->second;
+      }
+    const double dx = std::min(zone.x_range[1], upper_right[0]) -
                       std::max(zone.x_range[0], lower_left[0]);
     const double dy = std::min(zone.y_range[1], upper_right[1]) -
                       std::max(zone.y_range[0], lower_left[1]);
@@ -493,7 +710,10 @@ namespace FuzzyContact
         signature += ";";
         for (const EdgeLoad &l : c.loads)
           signature += l.name + ",";
-        signature += ")";
+        signature += ";";
+        for (const Support &support : c.supports)
+          signature += support.name + ",";
+        signature += ";" + c.mesh_file + ")";
       }
     for (const ContactPairDescription &p : contact_pairs)
       signature += p.name + ",";
@@ -525,27 +745,30 @@ namespace FuzzyContact
                 Input::to_names(prm.get("zones"), where + ": zones");
               const std::vector<std::string> load_names =
                 Input::to_names(prm.get("loads"), where + ": loads");
+              const std::vector<std::string> support_names =
+                Input::to_names(prm.get("supports"), where + ": supports");
+              // Only whether there is a mesh file matters here: it
+              // changes which keys the component has.
+              new_components[c].mesh_file =
+                Utilities::trim(prm.get("mesh file"));
               prm.leave_subsection();
               for (const std::string &z : zone_names)
                 new_components[c].zones.push_back(
                   MaterialZone{z, {{0, 0}}, {{0, 0}}, 0, 0, 0});
               for (const std::string &l : load_names)
                 new_components[c].loads.push_back(
-                  EdgeLoad{l, Face::right, 0, Tensor<1, 2>()});
+                  EdgeLoad{l, "right", 0, Tensor<1, 2>()});
+              for (const std::string &name : support_names)
+                new_components[c].supports.push_back(
+                  Support{name, "", {{true, true}}, {}});
             }
       }
     components = std::move(new_components);
 
     contact_pairs.clear();
     for (const std::string &p : pair_names)
-      contact_pairs.push_back(ContactPairDescription{p,
-                                                     "",
-                                                     Face::bottom,
-                                                     "",
-                                                     Face::top,
-                                                     0,
-                                                     false,
-                                                     0});
+      contact_pairs.push_back(
+        ContactPairDescription{p, "", "bottom", "", "top", 0, false, 0});
   }
 
 
@@ -560,7 +783,7 @@ namespace FuzzyContact
     prm.leave_subsection();
 
     for (ComponentDescription &component : components)
-      parse_component(prm, component);
+      parse_component(prm, component, source_file);
     for (ContactPairDescription &pair : contact_pairs)
       parse_contact_pair(prm, pair);
 
@@ -613,6 +836,10 @@ namespace FuzzyContact
                         ExcMessage(where + ": there is no component called <" +
                                    c + "> in this scene."));
           }
+        components[component_index(pair.slave_component)]
+          .boundary_id(pair.slave_face, where + ": slave face");
+        components[component_index(pair.master_component)]
+          .boundary_id(pair.master_face, where + ": master face");
         AssertThrow(pair.slave_component != pair.master_component,
                     ExcMessage(where + ": slave and master must be different "
                                        "components."));
@@ -629,6 +856,7 @@ namespace FuzzyContact
     // second the zone and load names of each component; the last one is
     // strict.
     Scene scene;
+    scene.source_file = source_name;
     try
       {
         Input::parse_in_passes(

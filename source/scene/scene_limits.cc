@@ -92,7 +92,9 @@ namespace FuzzyContact
                                   max_subdivisions,
                                   where + ": subdivisions (each)");
         const double cells =
-          1.0 * component.subdivisions[0] * component.subdivisions[1];
+          component.is_rectangle()
+            ? 1.0 * component.subdivisions[0] * component.subdivisions[1]
+            : 1.0 * component.mesh.n_cells;
         Input::in_range(cells,
                         1,
                         max_cells,
@@ -113,7 +115,16 @@ namespace FuzzyContact
           }
         for (const EdgeLoad &load : component.loads)
           force(load.total_force,
-                where + ", load " + load.name + ": total force");
+                where + ", load " + load.name +
+                  (load.is_pressure ? ": pressure" : ": total force"));
+        for (const Support &support : component.supports)
+          for (unsigned int d = 0; d < 2; ++d)
+            Input::in_range(support.displacement[d],
+                            -max_length,
+                            max_length,
+                            where + ", support " + support.name +
+                              ": displacement",
+                            "in m");
       }
     } // namespace
 
@@ -156,11 +167,10 @@ namespace FuzzyContact
 
       double
       face_nodes(const ComponentDescription &c,
-                 const Face                  face,
+                 const std::string          &face,
                  const unsigned int          r)
       {
-        const auto n = nodes_per_edge(c, r);
-        return (face == Face::left || face == Face::right) ? n[1] : n[0];
+        return c.n_mesh_faces(face) * std::ldexp(1.0, r) * c.fe_degree + 1;
       }
     } // namespace
 
@@ -168,6 +178,18 @@ namespace FuzzyContact
     double
     n_dofs(const Scene &scene, const unsigned int c, const unsigned int r)
     {
+      const ComponentDescription &component = scene.components[c];
+      if (!component.is_rectangle())
+        {
+          // Nodes of Q_p on quadrilaterals: p^2 per cell, plus those on the
+          // boundary edges (an upper bound for any mesh).
+          double boundary = 0;
+          for (const auto &[id, n] : component.mesh.boundary_faces)
+            boundary += n;
+          const double p = component.fe_degree, s = std::ldexp(1.0, r);
+          return 2 * (component.mesh.n_cells * s * s * p * p +
+                      boundary * s * p + 1);
+        }
       const auto n = nodes_per_edge(scene.components[c], r);
       return 2 * n[0] * n[1];
     }
@@ -195,7 +217,7 @@ namespace FuzzyContact
           // memory of step-3 on the tests/fuzz scene: 0.40 GB at 3
           // refinements (estimated 0.49 GB), 1.40 GB at 4 (estimated
           // 1.98 GB).
-          std::set<Face> faces;
+          std::set<std::string> faces;
           for (const ContactPairDescription &pair : scene.contact_pairs)
             {
               if (pair.slave_component == component.name)
@@ -204,7 +226,7 @@ namespace FuzzyContact
                 faces.insert(pair.master_face);
             }
           double columns = component.loads.size();
-          for (const Face f : faces)
+          for (const std::string &f : faces)
             columns += 2 * face_nodes(component, f, refinements);
           bytes += 8 * n * columns;
         }
@@ -253,7 +275,7 @@ namespace FuzzyContact
                           load.face) != component.clamped_faces.end())
               found.push_back("Component " + component.name + ", load " +
                               load.name + ": it acts on the clamped face <" +
-                              to_string(load.face) +
+                              load.face +
                               ">, so it moves nothing and every response "
                               "to it is zero.");
           }

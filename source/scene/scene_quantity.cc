@@ -86,7 +86,14 @@ namespace FuzzyContact
         scene.components[scene.component_index(pair.slave_component)];
       const ComponentDescription &m =
         scene.components[scene.component_index(pair.master_component)];
-      const auto side = [](const ComponentDescription &c, const Face f) {
+      AssertThrow(s.is_rectangle() && m.is_rectangle(),
+                  ExcMessage(name + ": contact pair " + pair.name +
+                             " joins a mesh-file component, whose gap is "
+                             "only known node by node; set its 'initial gap' "
+                             "to make the gap a scene quantity."));
+      const Face slave_face  = *rectangle_side(pair.slave_face);
+      const Face master_face = *rectangle_side(pair.master_face);
+      const auto side        = [](const ComponentDescription &c, const Face f) {
         switch (f)
           {
             case Face::left:
@@ -101,17 +108,17 @@ namespace FuzzyContact
         return 0.;
       };
       const bool facing =
-        (pair.slave_face == Face::bottom && pair.master_face == Face::top) ||
-        (pair.slave_face == Face::top && pair.master_face == Face::bottom) ||
-        (pair.slave_face == Face::left && pair.master_face == Face::right) ||
-        (pair.slave_face == Face::right && pair.master_face == Face::left);
+        (slave_face == Face::bottom && master_face == Face::top) ||
+        (slave_face == Face::top && master_face == Face::bottom) ||
+        (slave_face == Face::left && master_face == Face::right) ||
+        (slave_face == Face::right && master_face == Face::left);
       AssertThrow(facing,
                   ExcMessage(name +
                              ": the slave and master faces of contact pair " +
                              pair.name + " do not face each other."));
-      const double s_side = side(s, pair.slave_face);
-      const double m_side = side(m, pair.master_face);
-      return (pair.slave_face == Face::bottom || pair.slave_face == Face::left)
+      const double s_side = side(s, slave_face);
+      const double m_side = side(m, master_face);
+      return (slave_face == Face::bottom || slave_face == Face::left)
                ? s_side - m_side
                : m_side - s_side;
     }

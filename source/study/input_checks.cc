@@ -95,15 +95,11 @@ namespace FuzzyContact
           // Clamped DoFs: both displacements of the nodes of each clamped
           // face (corners counted twice, which only errs on the safe side).
           double clamped = 0;
-          for (const Face f : component.clamped_faces)
-            {
-              const unsigned int d =
-                (f == Face::left || f == Face::right) ? 1 : 0;
-              clamped +=
-                2 * (component.subdivisions[d] * std::ldexp(1.0, refinements) *
-                       component.fe_degree +
-                     1);
-            }
+          for (const Support &s : component.all_supports())
+            clamped += (s.fixed[0] + s.fixed[1]) *
+                       (component.n_mesh_faces(s.face) *
+                          std::ldexp(1.0, refinements) * component.fe_degree +
+                        1);
           const double free =
             SceneLimits::n_dofs(scene, c, refinements) - clamped;
           const double needed = 2.0 * n_modes + 12;

@@ -24,12 +24,14 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -75,6 +77,15 @@ namespace FuzzyContact
     dof_handler() const;
     const FESystem<2> &
     fe() const;
+    /**
+     * The mapping of the cells: bilinear, or of the element's degree when
+     * the mesh has circular arcs (their nodes then lie on the arcs).
+     */
+    const Mapping<2> &
+    mapping() const;
+    /** Length [m] of the boundary with id @p id (through the mapping). */
+    double
+    boundary_length(const types::boundary_id id) const;
     const AffineConstraints<double> &
     constraints() const;
     /** True for DoFs fixed by a clamp. */
@@ -167,6 +178,8 @@ namespace FuzzyContact
     void
     make_mesh(const unsigned int n_refinements);
     void
+    make_mesh_from_file();
+    void
     setup_dofs();
     void
     assemble_zone_matrices();
@@ -178,12 +191,13 @@ namespace FuzzyContact
     ComponentDescription description_;
     PlaneModel           plane_model_;
 
-    Triangulation<2>           triangulation_;
-    FESystem<2>                fe_;
-    DoFHandler<2>              dof_handler_;
-    AffineConstraints<double>  constraints_;
-    std::vector<Point<2>>      support_points_;
-    std::vector<unsigned char> dof_directions_;
+    Triangulation<2>            triangulation_;
+    std::unique_ptr<Mapping<2>> mapping_;
+    FESystem<2>                 fe_;
+    DoFHandler<2>               dof_handler_;
+    AffineConstraints<double>   constraints_;
+    std::vector<Point<2>>       support_points_;
+    std::vector<unsigned char>  dof_directions_;
 
     SparsityPattern                   sparsity_pattern_;
     std::vector<SparseMatrix<double>> zone_stiffness_;

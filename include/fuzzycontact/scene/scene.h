@@ -29,11 +29,14 @@
 #ifndef fuzzycontact_scene_scene_h
 #define fuzzycontact_scene_scene_h
 
+#include <fuzzycontact/scene/mesh_file.h>
+
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -78,11 +81,16 @@ namespace FuzzyContact
   Face
   face_from_string(const std::string &name, const std::string &what);
 
+  /** The side called @p name of a rectangle, if it is one. */
+  std::optional<Face>
+  rectangle_side(const std::string &name);
+
   /**
-   * A rectangular material zone of a component. Cells whose centre lies in
-   * [x_range] x [y_range] belong to the zone; the zones of a component must
-   * cover every cell exactly once, and their edges must lie on mesh lines
-   * (checked when the mesh is built).
+   * A material zone of a component. In a rectangle, the cells whose centre
+   * lies in [x_range] x [y_range]; the zones of a component must cover every
+   * cell exactly once, and their edges must lie on mesh lines (checked when
+   * the mesh is built). In a mesh file, the cells of the physical surface
+   * of the zone's name (material_id is its tag).
    */
   struct MaterialZone
   {
@@ -92,26 +100,51 @@ namespace FuzzyContact
     double                youngs_modulus;
     double                poissons_ratio;
     double                density;
+    types::material_id    material_id = 0;
   };
 
   /**
-   * A load distributed uniformly over one face: a constant traction whose
-   * resultant is total_force * direction (direction has unit length).
+   * A load on one face. Either a constant traction whose resultant is
+   * total_force * direction (direction has unit length; on a curved face the
+   * traction per unit length is total_force / face length), or, if
+   * is_pressure, a pressure of total_force [Pa] normal to the face, pushing
+   * into the body (its resultant follows the face's shape).
    */
   struct EdgeLoad
   {
     std::string  name;
-    Face         face;
+    std::string  face;
     double       total_force;
     Tensor<1, 2> direction;
+    bool         is_pressure = false;
   };
 
   /**
-   * One rectangular 2D component (a beam, say).
+   * A support on one face: the displacement components it fixes (x, y or
+   * both) and their prescribed values [m] (zero for a clamp, a roller or a
+   * symmetry line). A clamped face is a support fixing both at zero.
+   */
+  struct Support
+  {
+    std::string         name;
+    std::string         face;
+    std::array<bool, 2> fixed = {{true, true}};
+    Tensor<1, 2>        displacement;
+  };
+
+  /**
+   * One 2D component: a rectangle (a beam, say) or a mesh file. For a mesh
+   * file, lower_left and upper_right hold its bounding box.
    */
   struct ComponentDescription
   {
-    std::string               name;
+    std::string name;
+    /** The mesh file (resolved), empty for a rectangle. */
+    std::string mesh_file;
+    /** Mesh units to metres. */
+    double scale = 1;
+    /** What the mesh file holds (names, sizes); empty for a rectangle. */
+    MeshFileInfo              mesh;
     Point<2>                  lower_left;
     Point<2>                  upper_right;
     std::array<unsigned, 2>   subdivisions;
@@ -123,9 +156,32 @@ namespace FuzzyContact
      * called "body" over the whole component, with the component's
      * material, and the file has no 'Zone' subsection for it.
      */
-    bool                  implicit_zone = false;
-    std::vector<Face>     clamped_faces;
-    std::vector<EdgeLoad> loads;
+    bool                     implicit_zone = false;
+    std::vector<std::string> clamped_faces;
+    std::vector<Support>     supports;
+    std::vector<EdgeLoad>    loads;
+
+    /** True unless the component comes from a mesh file. */
+    bool
+    is_rectangle() const;
+
+    /**
+     * The boundary id of the face called @p face; throws naming @p what and
+     * the faces the component has.
+     */
+    types::boundary_id
+    boundary_id(const std::string &face, const std::string &what) const;
+
+    /**
+     * Every support of the component: one per clamped face (both
+     * components fixed at zero) followed by the declared supports.
+     */
+    std::vector<Support>
+    all_supports() const;
+
+    /** Number of mesh faces (edges) on face @p face before refinement. */
+    unsigned int
+    n_mesh_faces(const std::string &face) const;
 
     double
     length() const;
@@ -152,9 +208,9 @@ namespace FuzzyContact
   {
     std::string name;
     std::string slave_component;
-    Face        slave_face;
+    std::string slave_face;
     std::string master_component;
-    Face        master_face;
+    std::string master_face;
     double      friction_coefficient;
     /**
      * Gap of every slave node in the reference configuration. If false,
@@ -202,7 +258,9 @@ namespace FuzzyContact
     unsigned int
     component_index(const std::string &name) const;
 
-    std::string                         name;
+    std::string name;
+    /** The file the scene was read from: mesh files are relative to it. */
+    std::string                         source_file;
     PlaneModel                          plane_model = PlaneModel::plane_stress;
     std::vector<ComponentDescription>   components;
     std::vector<ContactPairDescription> contact_pairs;
