@@ -8,9 +8,13 @@
 #include <fuzzycontact/base/sparse_direct_solver.h>
 #include <fuzzycontact/fe/beam_theory.h>
 #include <fuzzycontact/fe/component.h>
+#include <fuzzycontact/fe/hertz_theory.h>
 #include <fuzzycontact/modal/modal_solver.h>
 #include <fuzzycontact/output/output_files.h>
 #include <fuzzycontact/scene/scene.h>
+#include <fuzzycontact/scene/scene_state.h>
+#include <fuzzycontact/study/contact_scene.h>
+#include <fuzzycontact/study/full_order_model.h>
 
 #include <deal.II/lac/lapack_full_matrix.h>
 
@@ -21,6 +25,9 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
+#include <sstream>
+#include <unistd.h>
 
 using namespace FuzzyContact;
 using namespace FuzzyContact::Testing;
@@ -823,4 +830,286 @@ TEST(Progress, LineEstimatesTheRemainingTimeAndQuietIsSilent)
   ProgressLines::set_verbosity(ProgressLines::Verbosity::progress);
   EXPECT_TRUE(ProgressLines::enabled());
   ProgressLines::set_verbosity(ProgressLines::Verbosity::automatic);
+}
+
+
+// ----------------------------------------------------------------------------
+// Components from mesh files
+// ----------------------------------------------------------------------------
+
+namespace
+{
+  namespace fs = std::filesystem;
+
+  // A structured nx x ny mesh of the rectangle [x0, x1] x [y0, y1] in Gmsh's
+  // ASCII format 2.2: physical curves left, right, bottom, top (tags 1-4),
+  // physical surface "body" (tag 7). With @p triangle, the first cell is
+  // two triangles; with @p inverted, its corners are listed crossed.
+  std::string
+  rectangle_msh(const double   x0,
+                const double   x1,
+                const double   y0,
+                const double   y1,
+                const unsigned nx,
+                const unsigned ny,
+                const bool     triangle = false,
+                const bool     inverted = false)
+  {
+    std::ostringstream s;
+    s << std::setprecision(17);
+    s << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n5\n"
+      << "1 1 \"left\"\n1 2 \"right\"\n1 3 \"bottom\"\n1 4 \"top\"\n"
+      << "2 7 \"body\"\n$EndPhysicalNames\n$Nodes\n"
+      << (nx + 1) * (ny + 1) << "\n";
+    const auto id = [&](unsigned i, unsigned j) {
+      return j * (nx + 1) + i + 1;
+    };
+    for (unsigned j = 0; j <= ny; ++j)
+      for (unsigned i = 0; i <= nx; ++i)
+        s << id(i, j) << " " << x0 + (x1 - x0) * i / nx << " "
+          << y0 + (y1 - y0) * j / ny << " 0\n";
+    s << "$EndNodes\n$Elements\n";
+    std::ostringstream e;
+    unsigned           n = 0;
+    for (unsigned j = 0; j < ny; ++j)
+      {
+        e << ++n << " 1 2 1 1 " << id(0, j) << " " << id(0, j + 1) << "\n";
+        e << ++n << " 1 2 2 2 " << id(nx, j) << " " << id(nx, j + 1) << "\n";
+      }
+    for (unsigned i = 0; i < nx; ++i)
+      {
+        e << ++n << " 1 2 3 3 " << id(i, 0) << " " << id(i + 1, 0) << "\n";
+        e << ++n << " 1 2 4 4 " << id(i, ny) << " " << id(i + 1, ny) << "\n";
+      }
+    for (unsigned j = 0; j < ny; ++j)
+      for (unsigned i = 0; i < nx; ++i)
+        if (triangle && i == 0 && j == 0)
+          {
+            e << ++n << " 2 2 7 5 " << id(0, 0) << " " << id(1, 0) << " "
+              << id(1, 1) << "\n";
+            e << ++n << " 2 2 7 5 " << id(0, 0) << " " << id(1, 1) << " "
+              << id(0, 1) << "\n";
+          }
+        else if (inverted && i == 0 && j == 0)
+          e << ++n << " 3 2 7 5 " << id(0, 0) << " " << id(1, 0) << " "
+            << id(0, 1) << " " << id(1, 1) << "\n";
+        else
+          e << ++n << " 3 2 7 5 " << id(i, j) << " " << id(i + 1, j) << " "
+            << id(i + 1, j + 1) << " " << id(i, j + 1) << "\n";
+    s << n << "\n" << e.str() << "$EndElements\n";
+    return s.str();
+  }
+
+  // Two stacked cantilevers (the overlap scene's P1 on P2, clamped at
+  // opposite ends), as rectangles or as mesh files of the same cells.
+  std::string
+  stacked_scene(const bool mesh_files, const std::string &extra = "")
+  {
+    const auto geometry = [&](const std::string &file,
+                              const std::string &lower,
+                              const std::string &upper) {
+      return mesh_files ? "  set mesh file = " + file + "\n"
+                        : "  set lower left corner = " + lower +
+                            "\n  set upper right corner = " + upper +
+                            "\n  set subdivisions = 8, 2\n";
+    };
+    return "subsection Scene\n  set name = meshes\n  set components = P1, "
+           "P2\n  set contact pairs = interface\nend\n"
+           "subsection Component P1\n" +
+           geometry("p1.msh", "0, 0.01", "0.4, 0.03") +
+           "  set clamped faces = left\n  set loads = tip\n"
+           "  subsection Load tip\n    set face = right\n"
+           "    set total force = 2e4\n    set direction = 0, -1\n  end\n"
+           "end\nsubsection Component P2\n" +
+           geometry("p2.msh", "0.1, -0.01", "0.5, 0.01") +
+           "  set clamped faces = right\n" + extra +
+           "end\nsubsection Contact interface\n"
+           "  set slave component = P1\n  set slave face = bottom\n"
+           "  set master component = P2\n  set master face = top\n"
+           "  set friction coefficient = 0.3\nend\n";
+  }
+
+  struct MeshFolder
+  {
+    fs::path path;
+    MeshFolder()
+        : path(fs::temp_directory_path() /
+               ("fuzzycontact-meshes-" + std::to_string(::getpid())))
+    {
+      fs::create_directories(path);
+      write("p1.msh", rectangle_msh(0, 0.4, 0.01, 0.03, 8, 2));
+      write("p2.msh", rectangle_msh(0.1, 0.5, -0.01, 0.01, 8, 2));
+    }
+    ~MeshFolder()
+    {
+      fs::remove_all(path);
+    }
+    void
+    write(const std::string &name, const std::string &text) const
+    {
+      std::ofstream(path / name) << text;
+    }
+    Scene
+    read(const std::string &text) const
+    {
+      write("scene.prm", text);
+      return Scene::read((path / "scene.prm").string());
+    }
+  };
+
+  std::string
+  message_of_reading(const MeshFolder &folder, const std::string &text)
+  {
+    try
+      {
+        folder.read(text);
+      }
+    catch (const dealii::ExceptionBase &e)
+      {
+        return Input::message_of(e);
+      }
+    return "";
+  }
+} // namespace
+
+
+// The same two cantilevers built as rectangles and read from Gmsh files of
+// the same cells give the same contact answer (round-off: the DoFs are
+// numbered differently): the reader, the names and the contact geometry
+// on mesh files agree with the rectangles.
+TEST(MeshFiles, ReadRectanglesSolveLikeGeneratedOnes)
+{
+  const MeshFolder folder;
+  const Scene      generated = Scene::read_from_string(stacked_scene(false));
+  const Scene      read      = folder.read(stacked_scene(true));
+  EXPECT_FALSE(read.components[0].is_rectangle());
+  EXPECT_NEAR(read.components[0].upper_right[0], 0.4, 1e-15);
+  double       answers[2][2];
+  unsigned int nodes[2];
+  for (const unsigned r : {0u, 1u})
+    {
+      const Scene *scene[2] = {&generated, &read};
+      for (unsigned k = 0; k < 2; ++k)
+        {
+          ContactScene   bodies(*scene[k], r);
+          FullOrderModel full(bodies, ObservedDofs(2));
+          full.set_state(SceneState(*scene[k]));
+          const ContactSolution s = full.solve();
+          answers[k][0]           = s.normal_force;
+          answers[k][1]           = s.tangential_force;
+          nodes[k]                = bodies.interface().n_nodes();
+        }
+      EXPECT_EQ(nodes[1], nodes[0]);
+      EXPECT_GT(answers[0][0], 1e3);
+      EXPECT_NEAR(answers[1][0], answers[0][0], 1e-10 * answers[0][0]);
+      EXPECT_NEAR(answers[1][1], answers[0][1], 1e-10 * answers[0][0]);
+    }
+}
+
+
+// Unknown names, triangles, inverted cells, a missing file and zones the
+// file does not have are refused, naming the file and the key.
+TEST(MeshFiles, BadMeshesAreRefusedWithTheFileAndTheKey)
+{
+  const MeshFolder folder;
+  std::string      text = stacked_scene(true);
+  const auto       with = [&](const std::string &from, const std::string &to) {
+    std::string t = text;
+    t.replace(t.find(from), from.size(), to);
+    return t;
+  };
+  std::string m = message_of_reading(folder,
+                                     with("set clamped faces = right",
+                                          "set clamped faces = rim"));
+  EXPECT_NE(m.find("Component P2: clamped faces: <"), std::string::npos) << m;
+  EXPECT_NE(m.find("p2.msh> has no physical curve called <rim>; it has: "
+                   "bottom, left, right, top."),
+            std::string::npos)
+    << m;
+
+  m = message_of_reading(folder,
+                         with("set slave face = bottom",
+                              "set slave face = base"));
+  EXPECT_NE(m.find("Contact interface: slave face: <"), std::string::npos) << m;
+
+  folder.write("tri.msh", rectangle_msh(0.1, 0.5, -0.01, 0.01, 8, 2, true));
+  m = message_of_reading(folder, with("p2.msh", "tri.msh"));
+  EXPECT_NE(m.find("tri.msh>: the mesh has triangles"), std::string::npos) << m;
+  EXPECT_NE(m.find("Mesh.RecombineAll"), std::string::npos) << m;
+
+  folder.write("bad.msh",
+               rectangle_msh(0.1, 0.5, -0.01, 0.01, 8, 2, false, true));
+  m = message_of_reading(folder, with("p2.msh", "bad.msh"));
+  EXPECT_NE(m.find("bad.msh>"), std::string::npos) << m;
+  EXPECT_NE(m.find("inverted or degenerate"), std::string::npos) << m;
+
+  m = message_of_reading(folder, with("p2.msh", "nowhere.msh"));
+  EXPECT_NE(m.find("nowhere.msh"), std::string::npos) << m;
+
+  text = stacked_scene(true,
+                       "  set zones = steel\n  subsection Zone steel\n  end\n");
+  m    = message_of_reading(folder, text);
+  EXPECT_NE(m.find("Component P2, zone steel: <"), std::string::npos) << m;
+  EXPECT_NE(m.find("has no physical surface called <steel>; it has: body."),
+            std::string::npos)
+    << m;
+
+  text = stacked_scene(true);
+  m    = message_of_reading(folder,
+                         with("set master face = top",
+                              "set master face = bottom"));
+  // P1's bottom face over P2's bottom face: the normals do not face.
+  EXPECT_NE(m, "");
+  try
+    {
+      const Scene scene =
+        folder.read(with("set master face = top", "set master face = bottom"));
+      ContactScene bodies(scene, 0);
+      ADD_FAILURE() << "faces that cannot touch were accepted";
+    }
+  catch (const dealii::ExceptionBase &e)
+    {
+      EXPECT_NE(Input::message_of(e).find("cannot touch"), std::string::npos)
+        << Input::message_of(e);
+    }
+}
+
+
+// The roller's arc is exact: with the SphericalManifold and the mapping of
+// degree 2, every node of the arc lies on the circle; and the full-order
+// Hertz contact matches a = sqrt(4 P R / (pi E*)) within one slave-node
+// spacing and p0 = 2 P / (pi a) within 2 % at the shipped mesh.
+TEST(Validation, HertzRollerOnBlock)
+{
+  const Scene scene = Scene::read(source_dir + "/prm/hertz.prm");
+  ASSERT_EQ(scene.components[0].mesh.arcs.size(), 1u);
+  const auto &arc = scene.components[0].mesh.arcs.begin()->second;
+  EXPECT_NEAR(arc.radius, 0.05, 1e-12);
+  ContactScene bodies(scene, 0);
+  for (const ContactNode &node : bodies.interface().nodes())
+    EXPECT_NEAR(node.slave.position.distance(arc.centre),
+                arc.radius,
+                1e-12 * arc.radius);
+
+  FullOrderModel full(bodies, ObservedDofs(2));
+  full.set_state(SceneState(scene));
+  const ContactSolution s = full.solve();
+  const auto &roller = scene.components[0], &block = scene.components[1];
+  const HertzTheory::Cylinder hertz{
+    arc.radius,
+    HertzTheory::contact_modulus(roller.zones[0].youngs_modulus,
+                                 roller.zones[0].poissons_ratio,
+                                 block.zones[0].youngs_modulus,
+                                 block.zones[0].poissons_ratio),
+    s.normal_force / roller.thickness};
+  const auto zone =
+    HertzTheory::contact_zone(HertzTheory::profile(bodies.interface(),
+                                                   s,
+                                                   0,
+                                                   Point<2>(0, 0),
+                                                   roller.thickness));
+  EXPECT_NEAR(zone.half_width, hertz.half_width(), zone.node_spacing);
+  EXPECT_NEAR(zone.peak_pressure / hertz.peak_pressure(), 1., 0.02);
+  // Frictionless: no tangential force; force balance of the nodal forces.
+  EXPECT_NEAR(s.tangential_force, 0., 1e-10 * s.normal_force);
 }

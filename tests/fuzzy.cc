@@ -126,7 +126,7 @@ TEST(SceneQuantity, NamesValuesAndErrors)
             std::string::npos);
   EXPECT_NE(error_of([&] {
               SceneQuantity::parse("P2.tip.force", scene);
-            }).find("component P2 has no load <tip> (its loads: none)"),
+            }).find("component P2 has no load <tip> (its loads and such supports: none)"),
             std::string::npos);
   EXPECT_NE(error_of([&] {
               SceneQuantity::parse("P1.nu", scene);

@@ -55,14 +55,26 @@ namespace FuzzyContact
       double                density;
     };
 
-    template <typename TargetFunction>
+    // The cell matrix of zone z with unit modulus, for what else needs it.
+    struct NoCellHook
+    {
+      void
+      operator()(const unsigned int,
+                 const FullMatrix<double> &,
+                 const std::vector<types::global_dof_index> &) const
+      {
+      }
+    };
+
+    template <typename TargetFunction, typename CellHook = NoCellHook>
     void
     assemble_elasticity(const Mapping<2>                &mapping,
                         const DoFHandler<2>             &dof_handler,
                         const AffineConstraints<double> &constraints,
                         const ComponentDescription      &description,
                         const PlaneModel                 model,
-                        const TargetFunction            &target)
+                        const TargetFunction            &target,
+                        const CellHook                  &cell_hook = CellHook())
     {
       const FiniteElement<2>              &fe = dof_handler.get_fe();
       const QGauss<2>                      quadrature(fe.degree + 1);
@@ -114,9 +126,10 @@ namespace FuzzyContact
                 cell_k(i, j) = cell_k(j, i);
                 cell_m(i, j) = cell_m(j, i);
               }
+          cell->get_dof_indices(dofs);
+          cell_hook(z, cell_k, dofs);
           cell_k *= to.modulus;
           cell_m *= to.density;
-          cell->get_dof_indices(dofs);
           constraints.distribute_local_to_global(cell_k, dofs, *to.stiffness);
           constraints.distribute_local_to_global(cell_m, dofs, *to.mass);
         }
@@ -296,22 +309,51 @@ namespace FuzzyContact
   {
     dof_handler_.distribute_dofs(fe_);
 
+    dof_directions_.resize(dof_handler_.n_dofs());
+    std::vector<types::global_dof_index> dofs(fe_.n_dofs_per_cell());
+    for (const auto &cell : dof_handler_.active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          dof_directions_[dofs[i]] = fe_.system_to_component_index(i).first;
+      }
+
+    // The supports hold their DoFs in the order listed (a node shared by
+    // two supports is held by the first). A prescribed displacement keeps
+    // the constraint homogeneous: its value enters through the load of the
+    // support (assemble_zone_matrices()), with the field of unit
+    // magnitude along its direction kept in displacement_fields_.
     constraints_.clear();
+    displacement_fields_.clear();
+    prescribed_.assign(dof_handler_.n_dofs(), false);
     for (const Support &support : description_.all_supports())
       {
         const std::string where =
           "Component " + name() + ", support " + support.name;
-        AssertThrow(support.displacement.norm() == 0,
-                    ExcMessage(where + ": a non-zero prescribed displacement "
-                                       "is not available yet; hold the face "
-                                       "with a zero displacement."));
+        std::map<types::global_dof_index, double> held;
         VectorTools::interpolate_boundary_values(
           *mapping_,
           dof_handler_,
           description_.boundary_id(support.face, where + ": face"),
           Functions::ZeroFunction<2>(2),
-          constraints_,
+          held,
           ComponentMask(std::vector<bool>{support.fixed[0], support.fixed[1]}));
+        const double   magnitude = support.displacement.norm();
+        Vector<double> field(magnitude > 0 ? dof_handler_.n_dofs() : 0);
+        for (const auto &[dof, value] : held)
+          if (!constraints_.is_constrained(dof))
+            {
+              constraints_.add_line(dof);
+              if (magnitude > 0)
+                field[dof] =
+                  support.displacement[dof_directions_[dof]] / magnitude;
+            }
+        if (magnitude > 0)
+          {
+            for (unsigned int i = 0; i < field.size(); ++i)
+              prescribed_[i] = prescribed_[i] || field[i] != 0;
+            displacement_fields_.push_back(std::move(field));
+          }
       }
     constraints_.close();
 
@@ -326,15 +368,6 @@ namespace FuzzyContact
     DoFTools::map_dofs_to_support_points(*mapping_,
                                          dof_handler_,
                                          support_points_);
-
-    dof_directions_.resize(dof_handler_.n_dofs());
-    std::vector<types::global_dof_index> dofs(fe_.n_dofs_per_cell());
-    for (const auto &cell : dof_handler_.active_cell_iterators())
-      {
-        cell->get_dof_indices(dofs);
-        for (unsigned int i = 0; i < dofs.size(); ++i)
-          dof_directions_[dofs[i]] = fe_.system_to_component_index(i).first;
-      }
   }
 
 
@@ -357,9 +390,79 @@ namespace FuzzyContact
       plane_model_,
       [this](const unsigned int z) {
         return AssemblyTarget{&zone_stiffness_[z], 1., &zone_mass_[z], 1.};
+      },
+      [this](const unsigned int                          z,
+             const FullMatrix<double>                   &cell_k,
+             const std::vector<types::global_dof_index> &dofs) {
+        add_displacement_loads(z, cell_k, dofs);
       });
     for (SparseMatrix<double> &M : zone_mass_)
       remove_constrained_mass(constraints_, M);
+    // On the held rows, K's diagonal times the displacement: the solution
+    // there is the displacement itself.
+    for (unsigned int s = 0; s < displacement_fields_.size(); ++s)
+      for (unsigned int i = 0; i < displacement_fields_[s].size(); ++i)
+        if (displacement_fields_[s][i] != 0)
+          for (unsigned int z = 0; z < n_zones; ++z)
+            displacement_zone_loads_[s][z][i] =
+              zone_stiffness_[z].diag_element(i) * displacement_fields_[s][i];
+  }
+
+
+  // Adds -K_fp u_p of one cell (unit modulus, zone z) to the free rows of
+  // each support displacement's load.
+  void
+  Component::add_displacement_loads(
+    const unsigned int                          z,
+    const FullMatrix<double>                   &cell_k,
+    const std::vector<types::global_dof_index> &dofs)
+  {
+    if (displacement_fields_.empty())
+      return;
+    if (displacement_zone_loads_.empty())
+      displacement_zone_loads_.assign(
+        displacement_fields_.size(),
+        std::vector<Vector<double>>(description_.zones.size(),
+                                    Vector<double>(dof_handler_.n_dofs())));
+    for (unsigned int s = 0; s < displacement_fields_.size(); ++s)
+      {
+        const Vector<double> &field = displacement_fields_[s];
+        for (unsigned int j = 0; j < dofs.size(); ++j)
+          if (field[dofs[j]] != 0)
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              if (!constraints_.is_constrained(dofs[i]))
+                displacement_zone_loads_[s][z][dofs[i]] -=
+                  cell_k(i, j) * field[dofs[j]];
+      }
+  }
+
+
+  // The load of each support displacement at the current zone moduli.
+  void
+  Component::update_displacement_loads()
+  {
+    unsigned int s = 0;
+    load_.reinit(dof_handler_.n_dofs());
+    for (unsigned int l = 0; l < description_.loads.size(); ++l)
+      {
+        if (description_.loads[l].is_displacement)
+          {
+            unit_loads_[l] = 0;
+            for (unsigned int z = 0; z < n_zones(); ++z)
+              unit_loads_[l].add(zone_moduli_[z],
+                                 displacement_zone_loads_[s][z]);
+            ++s;
+          }
+        load_.add(description_.loads[l].total_force, unit_loads_[l]);
+      }
+  }
+
+
+  bool
+  Component::is_prescribed(const types::global_dof_index dof) const
+  {
+    AssertIndexRange(dof, prescribed_.size());
+    return prescribed_[dof];
   }
 
 
@@ -402,6 +505,11 @@ namespace FuzzyContact
     load_.reinit(dof_handler_.n_dofs());
     for (const EdgeLoad &load : description_.loads)
       {
+        if (load.is_displacement)
+          {
+            unit_loads_.emplace_back(dof_handler_.n_dofs());
+            continue; // update_displacement_loads() forms it
+          }
         const types::boundary_id id =
           description_.boundary_id(load.face,
                                    "Component " + name() + ", load " +
@@ -431,9 +539,9 @@ namespace FuzzyContact
                 cell->get_dof_indices(dofs);
                 constraints_.distribute_local_to_global(cell_f, dofs, f);
               }
-        load_.add(load.total_force, f);
         unit_loads_.push_back(std::move(f));
       }
+    update_displacement_loads();
   }
 
 
@@ -474,6 +582,8 @@ namespace FuzzyContact
     zone_moduli_      = moduli;
     zone_densities_   = densities;
     matrices_current_ = false;
+    if (!displacement_fields_.empty())
+      update_displacement_loads();
   }
 
 

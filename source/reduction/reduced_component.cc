@@ -199,10 +199,21 @@ namespace FuzzyContact
 
     // Columns of E on B: unit loads at the attachment DoFs, then the unit
     // load vectors of the component.
+    // A prescribed displacement's load (per metre) holds forces of the
+    // order of the stiffness itself: its column is scaled to a largest
+    // entry of 1 N, like the unit loads at the contact DoFs, so that the
+    // rank test below does not take the contact columns for round-off.
     std::vector<const Vector<double> *> loads;
+    std::vector<double>                 load_scales;
     for (unsigned int l = 0; l < component.description().loads.size(); ++l)
       if (component.unit_load_vector(l).linfty_norm() > 0)
-        loads.push_back(&component.unit_load_vector(l));
+        {
+          loads.push_back(&component.unit_load_vector(l));
+          load_scales.push_back(
+            component.description().loads[l].is_displacement
+              ? 1. / component.unit_load_vector(l).linfty_norm()
+              : 1.);
+        }
     const unsigned int n_a = attachment_dofs.size();
     const unsigned int n_e = n_a + loads.size();
     AssertThrow(n_e > 0,
@@ -221,7 +232,7 @@ namespace FuzzyContact
         if ((*loads[l])[d] != 0)
           {
             AssertThrow(position[d] >= 0, not_on_b("a DoF of a load"));
-            E_B(position[d], n_a + l) = (*loads[l])[d];
+            E_B(position[d], n_a + l) = load_scales[l] * (*loads[l])[d];
           }
 
     // Psi_raw at B = G E_B; B = Phi_B^T E_B, R = Lambda^{-1} B;

@@ -153,6 +153,8 @@ namespace FuzzyContact
 
       for (const EdgeLoad &load : component.loads)
         {
+          if (load.is_displacement)
+            continue; // declared as its support
           prm.enter_subsection("Load " + load.name);
           prm.declare_entry("face",
                             "right",
@@ -323,6 +325,8 @@ namespace FuzzyContact
     {
       for (EdgeLoad &load : component.loads)
         {
+          if (load.is_displacement)
+            continue;
           const std::string lwhere = where + ", load " + load.name;
           prm.enter_subsection("Load " + load.name);
           load.face = Utilities::trim(prm.get("face"));
@@ -359,8 +363,19 @@ namespace FuzzyContact
                    ComponentDescription &component,
                    const std::string    &where)
     {
+      component.loads.erase(std::remove_if(component.loads.begin(),
+                                           component.loads.end(),
+                                           [](const EdgeLoad &load) {
+                                             return load.is_displacement;
+                                           }),
+                            component.loads.end());
       for (Support &support : component.supports)
         {
+          for (const EdgeLoad &load : component.loads)
+            AssertThrow(load.name != support.name,
+                        ExcMessage(where + ": support " + support.name +
+                                   " has the name of a load; name them "
+                                   "apart."));
           const std::string swhere = where + ", support " + support.name;
           prm.enter_subsection("Support " + support.name);
           support.face = Utilities::trim(prm.get("face"));
@@ -375,6 +390,18 @@ namespace FuzzyContact
               support.fixed[i] ? Input::finite(d[i], swhere + ": displacement")
                                : 0.;
           prm.leave_subsection();
+          // A prescribed displacement acts like a load of its own (whose
+          // force is the displacement's magnitude), so that it can be made
+          // fuzzy and is solved for like any load.
+          if (support.displacement.norm() > 0)
+            {
+              EdgeLoad load{support.name,
+                            support.face,
+                            support.displacement.norm(),
+                            support.displacement / support.displacement.norm()};
+              load.is_displacement = true;
+              component.loads.push_back(load);
+            }
         }
     }
 

@@ -184,10 +184,13 @@ namespace FuzzyContact
     const ComponentDescription &component = scene.components[q.component];
 
     const std::string &what = parts.back();
-    if (parts.size() == 3 && what == "force")
+    if (parts.size() == 3 && (what == "force" || what == "displacement"))
       {
+        // A support's prescribed displacement is a load of its name (see
+        // EdgeLoad::is_displacement): <component>.<support>.displacement.
         for (unsigned int l = 0; l < component.loads.size(); ++l)
-          if (component.loads[l].name == parts[1])
+          if (component.loads[l].name == parts[1] &&
+              component.loads[l].is_displacement == (what == "displacement"))
             {
               q.kind = Kind::load;
               q.load = l;
@@ -195,7 +198,11 @@ namespace FuzzyContact
             }
         AssertThrow(false,
                     ExcMessage(where + ": component " + component.name +
-                               " has no load <" + parts[1] + "> (its loads: " +
+                               (what == "force"
+                                  ? " has no load <"
+                                  : " has no support with a non-zero "
+                                    "displacement called <") +
+                               parts[1] + "> (its loads and such supports: " +
                                list_of(component.loads,
                                        [](const auto &l) {
                                          return l.name;
@@ -207,6 +214,17 @@ namespace FuzzyContact
                            "> is not a quantity; use E, rho, force, mu or "
                            "gap."));
     q.kind = what == "E" ? Kind::youngs_modulus : Kind::density;
+    // The forces that impose a displacement scale with the moduli, which
+    // the reduced models' fixed load vectors do not follow (yet).
+    for (const EdgeLoad &load : component.loads)
+      AssertThrow(what != "E" || !load.is_displacement,
+                  ExcMessage(where + ": component " + component.name +
+                             " has a prescribed displacement (support " +
+                             load.name +
+                             "), whose forces scale with its modulus; a "
+                             "varying modulus of such a component is not "
+                             "available yet. Vary the modulus of the other "
+                             "body, or drive this one by a force."));
     if (parts.size() == 3)
       {
         for (unsigned int z = 0; z < component.zones.size(); ++z)

@@ -58,7 +58,9 @@ namespace Step3
     std::string              output_directory;
     std::vector<std::string> outputs;
     unsigned int             mesh_refinements;
-    double                   load;
+    // The total external load to scale the scene's loads to; none: the
+    // scene's own loads (and prescribed displacements) as declared.
+    std::optional<double> load;
     // Each case's coefficient for every pair; none: the scene's own.
     std::vector<std::optional<double>> friction_coefficients;
     unsigned int                       n_load_steps;
@@ -98,9 +100,10 @@ namespace Step3
                         "Global refinements of each component's mesh.");
       prm.declare_entry("load",
                         "50000",
-                        Patterns::Double(),
+                        Patterns::Anything(),
                         "Total external load [N]; the scene's loads are "
-                        "scaled to this resultant.");
+                        "scaled to this resultant. 'scene': the scene's "
+                        "loads and prescribed displacements as declared.");
       prm.declare_entry("friction coefficients",
                         "0, 0.3",
                         Patterns::Anything(),
@@ -152,9 +155,15 @@ namespace Step3
         paper.empty() ? "" : Input::resolve_relative_to(paper, prm_file);
       output_directory = Utilities::trim(prm.get("output directory"));
       Input::check_output_directory(output_directory);
-      outputs          = Observations::split(prm.get("outputs"));
-      mesh_refinements = prm.get_integer("mesh refinements");
-      load             = SceneLimits::force(prm.get_double("load"), "load");
+      outputs                     = Observations::split(prm.get("outputs"));
+      mesh_refinements            = prm.get_integer("mesh refinements");
+      const std::string load_text = Utilities::trim(prm.get("load"));
+      load                        = std::nullopt;
+      if (load_text != "scene")
+        load =
+          SceneLimits::force(Input::to_double(load_text,
+                                              "load (a force in N, or scene)"),
+                             "load");
       friction_coefficients.clear();
       for (const std::string &mu :
            Utilities::split_string_list(prm.get("friction coefficients")))
@@ -254,17 +263,42 @@ namespace Step3
   }
 
 
+  // The sum of the magnitudes of the scene's forces at @p state (prescribed
+  // displacements left out).
+  double
+  external_force(const Scene &scene, const SceneState &state)
+  {
+    double total = 0;
+    for (unsigned int c = 0; c < scene.components.size(); ++c)
+      for (unsigned int l = 0; l < scene.components[c].loads.size(); ++l)
+        if (!scene.components[c].loads[l].is_displacement)
+          total += std::abs(state.load_forces[c][l]);
+    return total;
+  }
+
+
   // The scene's loads, scaled to the requested resultant.
   SceneState
   ContactStudy::loaded_state(const Scene &scene) const
   {
-    SceneState   state(scene);
+    SceneState state(scene);
+    if (!parameters.load)
+      return state;
+    for (const ComponentDescription &c : scene.components)
+      for (const EdgeLoad &l : c.loads)
+        AssertThrow(!l.is_displacement,
+                    ExcMessage("load = " + std::to_string(*parameters.load) +
+                               ": scene " + scene.name +
+                               " prescribes a displacement (component " +
+                               c.name + ", support " + l.name +
+                               "), which a force cannot scale; set load = "
+                               "scene."));
     const double declared = state.total_load();
-    AssertThrow(declared > 0 || parameters.load == 0,
+    AssertThrow(declared > 0 || *parameters.load == 0,
                 ExcMessage("Scene " + scene.name +
                            " declares no load to scale to the requested "
                            "load."));
-    state.scale_loads(declared > 0 ? parameters.load / declared : 0.);
+    state.scale_loads(declared > 0 ? *parameters.load / declared : 0.);
     return state;
   }
 
@@ -341,7 +375,7 @@ namespace Step3
           std::fill(state.friction_coefficients.begin(),
                     state.friction_coefficients.end(),
                     *mu);
-        ContactCase c(bodies, state, parameters.load);
+        ContactCase c(bodies, state, external_force(scene, state));
         {
           // A fresh full-order solver: its time is that of a cold solve
           // (factorisations included); a second solve shows the warm cost.
@@ -381,7 +415,7 @@ namespace Step3
         // Beam theory beside the full-order answer.
         if (theory)
           c.beam_theory =
-            theory->compare(parameters.load,
+            theory->compare(c.load,
                             c.runs[0].solution.normal_force,
                             c.runs[0].outputs[outputs.index("slave.uy")]);
         if (parameters.write_vtu)

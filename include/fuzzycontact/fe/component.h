@@ -13,6 +13,14 @@
 // (so that K stays invertible), and their rows in M and M_z are zero, so
 // that they carry no mass: in K phi = lambda M phi they have infinite
 // eigenvalues and never appear among the computed modes.
+//
+// A support with a prescribed displacement u_p keeps its constraints
+// homogeneous and becomes a load of its own (EdgeLoad::is_displacement):
+// forces -K_fp u_p on the free rows and K_pp u_p (the diagonal) on the held
+// rows, so that K u = f gives u = u_p on the held DoFs and the elastic
+// response elsewhere. The forces scale with the zone moduli (a stiffer body
+// needs more force for the same displacement); set_zone_materials() updates
+// them.
 
 #ifndef fuzzycontact_fe_component_h
 #define fuzzycontact_fe_component_h
@@ -27,6 +35,7 @@
 #include <deal.II/fe/mapping.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
@@ -88,9 +97,12 @@ namespace FuzzyContact
     boundary_length(const types::boundary_id id) const;
     const AffineConstraints<double> &
     constraints() const;
-    /** True for DoFs fixed by a clamp. */
+    /** True for DoFs held by a clamp or a support. */
     bool
     is_constrained(const types::global_dof_index dof) const;
+    /** True for DoFs held at a non-zero prescribed displacement. */
+    bool
+    is_prescribed(const types::global_dof_index dof) const;
 
     unsigned int
     n_zones() const;
@@ -180,6 +192,12 @@ namespace FuzzyContact
     void
     make_mesh_from_file();
     void
+    add_displacement_loads(const unsigned int                          z,
+                           const FullMatrix<double>                   &cell_k,
+                           const std::vector<types::global_dof_index> &dofs);
+    void
+    update_displacement_loads();
+    void
     setup_dofs();
     void
     assemble_zone_matrices();
@@ -210,6 +228,12 @@ namespace FuzzyContact
     mutable bool                 matrices_current_ = false;
     std::vector<Vector<double>>  unit_loads_;
     Vector<double>               load_;
+    // Per support with a non-zero displacement: the field of unit
+    // magnitude along it on the DoFs it holds, and per zone the nodal
+    // forces -K_z,fp u_p (free rows) and K_z,pp u_p (held rows) it needs.
+    std::vector<Vector<double>>              displacement_fields_;
+    std::vector<std::vector<Vector<double>>> displacement_zone_loads_;
+    std::vector<bool>                        prescribed_;
   };
 } // namespace FuzzyContact
 

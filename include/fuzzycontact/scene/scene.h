@@ -117,12 +117,21 @@ namespace FuzzyContact
     double       total_force;
     Tensor<1, 2> direction;
     bool         is_pressure = false;
+    /**
+     * True for the load that stands for a support's prescribed
+     * displacement (the scene adds one per support with a non-zero
+     * displacement, named after it): total_force is then the displacement's
+     * magnitude [m] and direction its direction, and the nodal forces are
+     * those that impose it, -K_fp u_p (see Component).
+     */
+    bool is_displacement = false;
   };
 
   /**
    * A support on one face: the displacement components it fixes (x, y or
    * both) and their prescribed values [m] (zero for a clamp, a roller or a
-   * symmetry line). A clamped face is a support fixing both at zero.
+   * symmetry line). A clamped face is a support fixing both at zero. Where
+   * supports share nodes, the first one listed holds them (clamps first).
    */
   struct Support
   {

@@ -1,0 +1,86 @@
+// Hertz's solution for a cylinder pressed onto an elastic body in plane
+// strain, and the finite element pressure profile to set beside it.
+//
+// A line load P [N/m] (the contact force per unit thickness) on a cylinder
+// of radius R against a half-space gives a contact half-width and a peak
+// pressure
+//
+//     a = sqrt(4 P R / (pi E*)),   p0 = 2 P / (pi a),
+//     p(x) = p0 sqrt(1 - x^2 / a^2)  for |x| < a,
+//
+// with 1 / E* = (1 - nu_1^2) / E_1 + (1 - nu_2^2) / E_2. The finite element
+// pressure of a slave node is its normal force over its tributary area
+// (tributary length times thickness), as step-3's max_pressure.
+
+#ifndef fuzzycontact_fe_hertz_theory_h
+#define fuzzycontact_fe_hertz_theory_h
+
+#include <fuzzycontact/contact/contact_interface.h>
+#include <fuzzycontact/contact/contact_problem.h>
+
+#include <vector>
+
+namespace FuzzyContact
+{
+  namespace HertzTheory
+  {
+    /** Plane-strain contact modulus E* of two materials. */
+    double
+    contact_modulus(const double E1,
+                    const double nu1,
+                    const double E2,
+                    const double nu2);
+
+    struct Cylinder
+    {
+      double radius;
+      double contact_modulus;
+      /** Contact force per unit thickness [N/m]. */
+      double line_load;
+
+      double
+      half_width() const;
+      double
+      peak_pressure() const;
+      /** p0 sqrt(1 - x^2 / a^2) inside the contact, 0 outside. */
+      double
+      pressure(const double x) const;
+    };
+
+    /** One slave node of the profile. */
+    struct ProfilePoint
+    {
+      /** Position along the master tangent, from the first contact point. */
+      double x;
+      double pressure;
+      bool   closed;
+    };
+
+    /**
+     * The pressure of every slave node of pair @p pair in @p solution,
+     * sorted by x = tangent . (slave position - @p origin); @p thickness is
+     * the slave component's.
+     */
+    std::vector<ProfilePoint>
+    profile(const ContactInterface &interface,
+            const ContactSolution  &solution,
+            const unsigned int      pair,
+            const Point<2>         &origin,
+            const double            thickness);
+
+    /** What the profile says about the contact zone. */
+    struct ContactZone
+    {
+      /** Largest pressure and the half of the closed zone's extent. */
+      double peak_pressure;
+      double half_width;
+      /** Spacing of the slave nodes at the zone's edges (the larger). */
+      double node_spacing;
+    };
+
+    ContactZone
+    contact_zone(const std::vector<ProfilePoint> &profile);
+  } // namespace HertzTheory
+} // namespace FuzzyContact
+
+#endif
