@@ -89,7 +89,7 @@ main(int argc, char **argv)
             << " (full-order solver, frictionless, plane strain)\n"
             << " refinements  DoFs roller/block  P [N/m]       a_FE [mm]"
                "  a_Hertz [mm]  spacing [mm]  p0_FE [MPa]  p0_Hertz [MPa]"
-               "  p0 error  solve [s]\n";
+               "  p0 error  nodal p0 error  solve [s]\n";
   std::vector<Row> rows;
   for (unsigned int r = 0; r <= finest; ++r)
     {
@@ -105,17 +105,23 @@ main(int argc, char **argv)
                 << 1e-6 * row.zone.peak_pressure << std::setw(16) << 1e-6 * p0
                 << std::showpos << std::setprecision(2) << std::setw(9)
                 << 100 * (row.zone.peak_pressure / p0 - 1) << "%"
+                << std::setw(15)
+                << 100 * (row.zone.nodal_peak_pressure / p0 - 1) << "%"
                 << std::noshowpos << std::setprecision(3) << std::setw(11)
                 << row.time << "\n";
     }
 
   const Row    &shipped = rows.front();
   std::ofstream data("hertz-profile.dat");
-  data << "# x/a_Hertz  p/p0_Hertz (finite elements, shipped mesh)\n";
-  for (const auto &p : shipped.profile)
-    if (std::abs(p.x) < 2 * shipped.theory.half_width())
-      data << p.x / shipped.theory.half_width() << " "
-           << p.pressure / shipped.theory.peak_pressure() << "\n";
+  data << "# x/a_Hertz  p/p0_Hertz: nodal, averaged over the node and its "
+          "neighbours (shipped mesh)\n";
+  const std::vector<double> averaged =
+    HertzTheory::averaged_pressures(shipped.profile);
+  for (unsigned int i = 0; i < shipped.profile.size(); ++i)
+    if (std::abs(shipped.profile[i].x) < 2 * shipped.theory.half_width())
+      data << shipped.profile[i].x / shipped.theory.half_width() << " "
+           << shipped.profile[i].pressure / shipped.theory.peak_pressure()
+           << " " << averaged[i] / shipped.theory.peak_pressure() << "\n";
   data.close();
   std::ofstream plot("hertz-profile.gp");
   plot << "set terminal pngcairo size 800,500\n"
@@ -125,8 +131,10 @@ main(int argc, char **argv)
        << "set samples 801\n"
        << "f(x) = abs(x) < 1 ? sqrt(1 - x*x) : 0\n"
        << "plot f(x) with lines lw 2 title 'Hertz', "
-       << "'hertz-profile.dat' with points pt 7 ps 1 title "
-          "'FuzzyContact, full order (nodal force / tributary area)'\n";
+       << "'hertz-profile.dat' using 1:2 with points pt 6 ps 1 title "
+          "'nodal force / tributary area', "
+       << "'hertz-profile.dat' using 1:3 with linespoints pt 7 ps 0.8 title "
+          "'averaged over the node and its two neighbours'\n";
   plot.close();
   if (std::system("gnuplot hertz-profile.gp") != 0)
     std::cerr << "gnuplot failed: hertz-profile.png not written\n";

@@ -124,10 +124,13 @@ TEST(SceneQuantity, NamesValuesAndErrors)
               SceneQuantity::parse("P1.root.E", scene);
             }).find("component P1 has no zone called <root> (its zones: body)"),
             std::string::npos);
-  EXPECT_NE(error_of([&] {
-              SceneQuantity::parse("P2.tip.force", scene);
-            }).find("component P2 has no load <tip> (its loads and such supports: none)"),
-            std::string::npos);
+  EXPECT_NE(
+    error_of([&] {
+      SceneQuantity::parse("P2.tip.force", scene);
+    })
+      .find(
+        "component P2 has no load <tip> (its loads and such supports: none)"),
+    std::string::npos);
   EXPECT_NE(error_of([&] {
               SceneQuantity::parse("P1.nu", scene);
             }).find("<nu> is not a quantity"),

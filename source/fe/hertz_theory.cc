@@ -60,7 +60,8 @@ namespace FuzzyContact
           points.push_back(
             {node.tangent * (node.slave.position - origin),
              solution.p_n(k) / (node.tributary_length * thickness),
-             solution.status[k] != ContactStatus::open});
+             solution.status[k] != ContactStatus::open,
+             node.tributary_length});
         }
       std::sort(points.begin(),
                 points.end(),
@@ -71,18 +72,40 @@ namespace FuzzyContact
     }
 
 
+    std::vector<double>
+    averaged_pressures(const std::vector<ProfilePoint> &profile)
+    {
+      std::vector<double> averaged(profile.size());
+      for (unsigned int i = 0; i < profile.size(); ++i)
+        {
+          double force = 0, length = 0;
+          for (unsigned int j = (i > 0 ? i - 1 : 0);
+               j <= std::min<unsigned int>(i + 1, profile.size() - 1);
+               ++j)
+            {
+              force += profile[j].pressure * profile[j].tributary;
+              length += profile[j].tributary;
+            }
+          averaged[i] = force / length;
+        }
+      return averaged;
+    }
+
+
     ContactZone
     contact_zone(const std::vector<ProfilePoint> &profile)
     {
-      ContactZone  zone{0, 0, 0};
-      unsigned int first = profile.size(), last = 0;
+      const std::vector<double> averaged = averaged_pressures(profile);
+      ContactZone               zone{0, 0, 0, 0};
+      unsigned int              first = profile.size(), last = 0;
       for (unsigned int i = 0; i < profile.size(); ++i)
         if (profile[i].closed)
           {
             first = std::min(first, i);
             last  = i;
-            zone.peak_pressure =
-              std::max(zone.peak_pressure, profile[i].pressure);
+            zone.nodal_peak_pressure =
+              std::max(zone.nodal_peak_pressure, profile[i].pressure);
+            zone.peak_pressure = std::max(zone.peak_pressure, averaged[i]);
           }
       AssertThrow(first < profile.size(),
                   ExcMessage("Hertz: no slave node is in contact."));

@@ -13,8 +13,6 @@ namespace FuzzyContact
 {
   namespace
   {
-    const char *const face_names = "left|right|bottom|top";
-
     std::string
     component_section(const std::string &name)
     {
@@ -96,14 +94,11 @@ namespace FuzzyContact
                         Patterns::Double(),
                         "Density [kg/m^3] of zones that do not set their "
                         "own.");
-      prm.declare_entry(
-        "clamped faces",
-        "",
-        *(component.mesh_file.empty()
-            ? Patterns::List(Patterns::Selection(face_names), 0, 4).clone()
-            : Patterns::Anything().clone()),
-        "Faces whose displacements are zero (a mesh file: "
-        "names of its physical curves).");
+      prm.declare_entry("clamped faces",
+                        "",
+                        Patterns::Anything(),
+                        "Faces whose displacements are zero (a mesh file: "
+                        "names of its physical curves).");
       prm.declare_entry("supports",
                         "",
                         Patterns::Anything(),
@@ -158,9 +153,7 @@ namespace FuzzyContact
           prm.enter_subsection("Load " + load.name);
           prm.declare_entry("face",
                             "right",
-                            *(component.mesh_file.empty()
-                                ? Patterns::Selection(face_names).clone()
-                                : Patterns::Anything().clone()),
+                            Patterns::Anything(),
                             "Face that carries the load.");
           prm.declare_entry("total force",
                             "0",

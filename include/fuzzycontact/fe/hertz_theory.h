@@ -54,6 +54,8 @@ namespace FuzzyContact
       double x;
       double pressure;
       bool   closed;
+      /** The length of slave face the node stands for [m]. */
+      double tributary;
     };
 
     /**
@@ -68,11 +70,20 @@ namespace FuzzyContact
             const Point<2>         &origin,
             const double            thickness);
 
-    /** What the profile says about the contact zone. */
+    /**
+     * What the profile says about the contact zone. A node's own pressure
+     * (force over tributary area) oscillates between the vertex and the
+     * mid-side nodes of Q2 faces (node-to-segment contact does not give
+     * consistent nodal forces); averaged over a node and its two
+     * neighbours (their forces over their tributary areas: at least one
+     * whole face) it does not.
+     */
     struct ContactZone
     {
-      /** Largest pressure and the half of the closed zone's extent. */
+      /** Largest nodal pressure, largest averaged pressure. */
+      double nodal_peak_pressure;
       double peak_pressure;
+      /** Half of the closed zone's extent. */
       double half_width;
       /** Spacing of the slave nodes at the zone's edges (the larger). */
       double node_spacing;
@@ -80,6 +91,10 @@ namespace FuzzyContact
 
     ContactZone
     contact_zone(const std::vector<ProfilePoint> &profile);
+
+    /** The averaged pressure of every node of @p profile (see ContactZone). */
+    std::vector<double>
+    averaged_pressures(const std::vector<ProfilePoint> &profile);
   } // namespace HertzTheory
 } // namespace FuzzyContact
 
