@@ -133,7 +133,21 @@ namespace FuzzyContact
         }
       entry["shape"] = shapes;
       if (proved)
-        entry["proof"] = proof;
+        {
+          // The largest reduction error at a bound, relative to the range.
+          double largest = 0;
+          for (const auto *side : {&r.proofs.lower[k], &r.proofs.upper[k]})
+            for (const BoundProof &p : *side)
+              largest = std::max(largest, std::abs(p.difference()));
+          const double range = range_of(r, k);
+          proof["max_abs_difference_over_range"] =
+            range > 0 ? largest / range : largest;
+          entry["proof"] = proof;
+          out << "  largest |reduced - exact| at a bound: " << sci(largest, 2)
+              << (range > 0 ? " (" + sci(largest / range, 2) + " of the range)"
+                            : std::string())
+              << "\n";
+        }
 
       // Kinks and interior optima, per side.
       for (const bool upper : {false, true})

@@ -112,7 +112,7 @@ namespace FuzzyContact
      * global stage is not a vertex (from the best points, a quarter of the
      * box apart); one from the best point otherwise.
      */
-    unsigned int local_starts = 3;
+    unsigned int local_starts = 2;
     /**
      * The pattern search that refines a bound with interior coordinates
      * stops when its step falls below this fraction of the intervals'
