@@ -1,5 +1,6 @@
 # Checks step-4's results.json on the kinked scene (prm/step-4-kinked.prm
-# on coarse meshes, a dense Extension Principle of 21 points per parameter):
+# on coarse meshes, 6 levels, a dense Extension Principle of 20 points per
+# parameter):
 # the optimisation is short of the dense reference by at most 1e-3 of each
 # output's range; F_t's upper bound lies at a kink inside the box (found,
 # reported), where the dense grid falls short: the bounds beyond the
