@@ -407,11 +407,12 @@ namespace FuzzyContact
         note += (f ? "; " : "") + findings[f];
       note += ")";
       if (settings.global_points > 0 && !missed)
-        note +=
-          "; the global stage (" + std::to_string(settings.global_points) +
-          " design points, the vertices, the optima of the level "
-          "above) and " +
-          std::to_string(n_starts) + " local start(s) found no better point";
+        note += "; the global stage (" +
+                std::to_string(settings.global_points) + " design points" +
+                (normalisation.n_free() < 20 ? ", the vertices" : "") +
+                ", the optima of the level above) and " +
+                std::to_string(n_starts) +
+                " local start(s) found no better point";
       else if (settings.fallback)
         note += multi_start(objective, best, lo, hi);
       else
