@@ -1,7 +1,8 @@
 # Checks step-4's results.json (included by run_program.cmake with
 # RESULTS_JSON set): the layout, bounds within 0.5 % of the Extension
-# Principle for every output (slave.ux, slave.uy, Fn, Ft), the three
-# methods' evaluation counts and times, and the membership plot.
+# Principle for every output (slave.ux, slave.uy, Fn, Ft), the proof of
+# every bound, the three methods' evaluation counts and times, and the
+# membership plot.
 string(JSON n_outputs LENGTH "${RESULTS_JSON}" outputs)
 if(NOT n_outputs EQUAL 4)
   message(FATAL_ERROR "expected 4 outputs, got ${n_outputs}")
@@ -26,8 +27,21 @@ foreach(k RANGE 3)
   if(lo0 GREATER lo2 OR hi0 LESS hi2)
     message(FATAL_ERROR "${name}: the alpha-cuts are not nested")
   endif()
-  message(STATUS "${name}: largest relative difference ${error}")
+  # every bound carries its proof (the reduced model is exact here: the
+  # reduction error at the bounds is round-off) and the optimisation is
+  # not short of the reference
+  string(JSON proof GET "${RESULTS_JSON}" outputs ${k} proof max_abs_difference_over_range)
+  string(JSON short GET "${RESULTS_JSON}" outputs ${k} reference_comparison short_of_reference)
+  string(JSON n LENGTH "${RESULTS_JSON}" outputs ${k} proof upper_exact)
+  if(NOT n EQUAL 3 OR NOT proof LESS 1e-6 OR NOT short LESS 1e-6)
+    message(FATAL_ERROR "${name}: ${n} proofs, reduction error ${proof}, short of the reference by ${short}")
+  endif()
+  message(STATUS "${name}: largest relative difference ${error}, reduction error at the bounds ${proof}")
 endforeach()
+string(JSON proofs GET "${RESULTS_JSON}" evaluations proofs)
+if(NOT proofs GREATER 0 OR NOT proofs LESS 24)
+  message(FATAL_ERROR "${proofs} proof evaluations for 24 bounds")
+endif()
 foreach(method optimisation vertex extension_principle)
   string(JSON n GET "${RESULTS_JSON}" evaluations ${method})
   string(JSON t GET "${RESULTS_JSON}" time_s ${method})

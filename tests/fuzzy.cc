@@ -3,9 +3,11 @@
 // against interval bounds known in closed form.
 
 #include <fuzzycontact/base/input.h>
+#include <fuzzycontact/fuzzy/bound_proof.h>
 #include <fuzzycontact/fuzzy/extension_principle.h>
 #include <fuzzycontact/fuzzy/fuzzy_number.h>
 #include <fuzzycontact/fuzzy/fuzzy_parameters.h>
+#include <fuzzycontact/fuzzy/global_stage.h>
 #include <fuzzycontact/fuzzy/optimisation_method.h>
 #include <fuzzycontact/fuzzy/vertex_method.h>
 #include <fuzzycontact/scene/scene.h>
@@ -347,10 +349,11 @@ TEST(IntervalMethods, LocalOptimumTrapIsCaughtByTheVertexCheck)
 {
   // S = cos(3 pi (p - 1) / 0.1) on p in [0.9, 1.1]: the global maximum 1
   // is at the core p = 1, the minimum -1 at p = 1 +- 1/30 and at both ends.
-  // The lower bound's search starts at p = 1, a stationary point where the
-  // gradient vanishes, so the local optimiser does not move; the check
-  // against the vertices (S = -1 there) must see that and the multi-start
-  // must find -1. Without the fallback the detection is still reported.
+  // A local search for the lower bound started at p = 1 (the optimum of the
+  // level above) would not move: the gradient vanishes there. The global
+  // stage compares it with the vertices (S = -1) and starts from there.
+  // The upper bound is an interior optimum: reported, and answered by the
+  // global stage, or without one by the multi-start unless it is off.
   const std::vector<FuzzyNumber> parameters = {
     FuzzyNumber::triangular(0.9, 1.0, 1.1)};
   const Response response = [](const std::vector<double> &p) {
@@ -358,19 +361,219 @@ TEST(IntervalMethods, LocalOptimumTrapIsCaughtByTheVertexCheck)
   };
   const std::vector<double> alpha = {0, 1};
   OptimisationSettings      with = closed_form_settings(), without = with;
-  without.fallback = false;
+  without.fallback      = false;
+  without.global_points = 0;
   const auto o =
     OptimisationMethod(with).bounds(parameters, alpha, response, {"S"}, self);
   EXPECT_NEAR(o.bounds[0][0].lower, -1., 1e-12);
   EXPECT_NEAR(o.bounds[0][0].upper, 1., 1e-12);
-  ASSERT_FALSE(o.notes.empty());
+  ASSERT_EQ(o.notes.size(), 1u);
+  EXPECT_NE(o.notes.front().find("(upper bound), alpha = 0: non-monotone "
+                                 "response (optimum inside the interval"),
+            std::string::npos)
+    << o.notes.front();
+  EXPECT_NE(o.notes.front().find("found no better point"), std::string::npos)
+    << o.notes.front();
   const auto stuck = OptimisationMethod(without).bounds(parameters,
                                                         alpha,
                                                         response,
                                                         {"S"},
                                                         self);
-  EXPECT_FALSE(stuck.notes.empty());
+  EXPECT_NEAR(stuck.bounds[0][0].lower, -1., 1e-12);
+  ASSERT_FALSE(stuck.notes.empty());
   EXPECT_NE(stuck.notes.front().find("no fallback"), std::string::npos);
+}
+
+namespace
+{
+  // A kinked response in the manner of a friction force that reverses:
+  // S = min(2 p0, 3 (1 - p0)) (1 + 0.1 p1) on p0 in [0, 1]: it rises with
+  // p0 up to the kink at p0 = 0.6 and falls beyond, so its maximum over a
+  // box lies at the kink (if the box holds p0 = 0.6) and at p1's upper end.
+  const std::vector<FuzzyNumber> kinked_parameters = {
+    FuzzyNumber::triangular(0.15, 0.45, 0.95),
+    FuzzyNumber::triangular(0, 1, 2)};
+
+  std::vector<double>
+  kinked(const std::vector<double> &p)
+  {
+    return {std::min(2 * p[0], 3 * (1 - p[0])) * (1 + 0.1 * p[1])};
+  }
+
+  Interval
+  kinked_exact(const double alpha)
+  {
+    const auto box = alpha_box(kinked_parameters, alpha);
+    const auto f   = [](const double p0) {
+      return std::min(2 * p0, 3 * (1 - p0));
+    };
+    const double top =
+      box[0].contains(0.6) ? 1.2 : std::max(f(box[0].lower), f(box[0].upper));
+    return {std::min(f(box[0].lower), f(box[0].upper)) *
+              (1 + 0.1 * box[1].lower),
+            top * (1 + 0.1 * box[1].upper)};
+  }
+} // namespace
+
+// The global stage and the pattern search find the maximum at the kink to
+// far better than 1e-3 of the range at every level; the kink and the
+// interior optimum are reported per level, the lower bound lies at a vertex,
+// the alpha-cuts are nested, and the 4-point Extension Principle misses the
+// kink (a sampled reference can only under-estimate an interval).
+TEST(IntervalMethods, KinkedMaximumIsFoundAndReported)
+{
+  const auto alpha = alpha_levels(11);
+  const auto o     = OptimisationMethod(closed_form_settings())
+                   .bounds(kinked_parameters, alpha, kinked, {"S"}, self);
+  const auto e =
+    ExtensionPrinciple(4).bounds(kinked_parameters, alpha, kinked, {"S"}, self);
+  const double range           = kinked_exact(0).upper - kinked_exact(0).lower;
+  double       reference_short = 0;
+  for (unsigned int l = 0; l < alpha.size(); ++l)
+    {
+      const Interval exact = kinked_exact(alpha[l]);
+      EXPECT_NEAR(o.bounds[0][l].lower, exact.lower, 1e-12 * range);
+      EXPECT_NEAR(o.bounds[0][l].upper, exact.upper, 1e-6 * range)
+        << "alpha = " << alpha[l];
+      EXPECT_EQ(o.lower_quality[0][l].where, "vertex");
+      const BoundQuality &q   = o.upper_quality[0][l];
+      const Interval      cut = alpha_box(kinked_parameters, alpha[l])[0];
+      if (cut.lower < 0.6 - 1e-9 && cut.upper > 0.6 + 1e-9)
+        {
+          EXPECT_EQ(q.where, "boundary") << "alpha = " << alpha[l];
+          EXPECT_EQ(q.kinks, std::vector<unsigned int>{0});
+          EXPECT_TRUE(q.refined);
+          EXPECT_LT(q.last_change, 1e-4);
+          // the last step polled: the smallest halving of 1/16 >= 1e-6
+          EXPECT_GE(q.final_step, 1e-6);
+          EXPECT_LT(q.final_step, 2e-6);
+        }
+      else
+        EXPECT_EQ(q.where, "vertex") << "alpha = " << alpha[l];
+      if (l > 0) // nested: each level's interval contains the next one's
+        {
+          EXPECT_LE(o.bounds[0][l - 1].lower, o.bounds[0][l].lower);
+          EXPECT_GE(o.bounds[0][l - 1].upper, o.bounds[0][l].upper);
+        }
+      reference_short =
+        std::max(reference_short, (exact.upper - e.bounds[0][l].upper) / range);
+      // the method's upper bound, verified here by the closed form, lies
+      // beyond the reference's: the reference missed it
+      const auto c = compare_with_reference(o.bounds[0][l].upper,
+                                            kinked(o.argmax[0][l])[0],
+                                            e.bounds[0][l].upper,
+                                            true,
+                                            range);
+      EXPECT_EQ(c.short_of_reference, 0.);
+      if (exact.upper - e.bounds[0][l].upper > 1e-6 * range)
+        {
+          EXPECT_GT(c.reference_missed, 0.);
+        }
+    }
+  EXPECT_GT(reference_short, 0.01);
+}
+
+// The design: one point in every stratum of every coordinate, the same for
+// the same seed, another for another seed.
+TEST(IntervalMethods, LatinHypercubeFillsEveryStratum)
+{
+  const auto design = LocalOptimisation::latin_hypercube(16, 3, 7);
+  ASSERT_EQ(design.size(), 16u);
+  for (unsigned int d = 0; d < 3; ++d)
+    {
+      std::set<unsigned int> strata;
+      for (const auto &x : design)
+        {
+          EXPECT_GE(x[d], 0.);
+          EXPECT_LT(x[d], 1.);
+          strata.insert(static_cast<unsigned int>(x[d] * 16));
+        }
+      EXPECT_EQ(strata.size(), 16u);
+    }
+  EXPECT_EQ(LocalOptimisation::latin_hypercube(16, 3, 7)[5], design[5]);
+  EXPECT_NE(LocalOptimisation::latin_hypercube(16, 3, 8)[5], design[5]);
+}
+
+// A local optimisation stopped by its iteration limit with the optimum
+// inside the box: the note says so, and does not say that an end of an
+// interval was better (it was not).
+TEST(IntervalMethods, IterationLimitNoteSaysOnlyWhatHappened)
+{
+  const std::vector<FuzzyNumber> parameters =
+    {FuzzyNumber::triangular(0, 0.5, 1), FuzzyNumber::triangular(0, 0.5, 1)};
+  const Response response = [](const std::vector<double> &p) {
+    return std::vector<double>{std::pow(p[0] - 0.37, 2) +
+                               3 * std::pow(p[1] - 0.41, 2) +
+                               std::pow(p[0] - p[1], 2)};
+  };
+  OptimisationSettings settings = closed_form_settings();
+  settings.max_iterations       = 1;
+  const auto o =
+    OptimisationMethod(settings).bounds(parameters, {0}, response, {"S"}, self);
+  bool limit = false;
+  for (const std::string &note : o.notes)
+    {
+      EXPECT_EQ(note.find("moved there"), std::string::npos) << note;
+      limit = limit || note.find("ROL stopped at its iteration limit (1 "
+                                 "iterations); no end of a parameter "
+                                 "interval was better") != std::string::npos;
+    }
+  EXPECT_TRUE(limit);
+  EXPECT_TRUE(o.lower_quality[0][0].iteration_limit);
+  EXPECT_EQ(o.lower_quality[0][0].where, "interior");
+  EXPECT_TRUE(o.lower_quality[0][0].kinks.empty());
+  // the pattern search finishes what ROL left: the quadratic's minimum, at
+  // p0 = 5.42 / 14, p1 = 2 p0 - 0.37 (where its gradient vanishes)
+  const double p0 = 5.42 / 14, p1 = 2 * p0 - 0.37;
+  EXPECT_NEAR(o.bounds[0][0].lower, response({p0, p1})[0], 1e-10);
+}
+
+// Each bound's argument is evaluated once more by the exact model: distinct
+// points once, the difference at every bound; the comparison with a
+// reference tells a reference's miss from a reduction error.
+TEST(IntervalMethods, BoundProofsEvaluateEachArgumentOnce)
+{
+  unsigned int   calls = 0;
+  const Response exact = [&](const std::vector<double> &p) {
+    ++calls;
+    return monotone(p);
+  };
+  const Response reduced = [](const std::vector<double> &p) {
+    auto s = monotone(p);
+    return std::vector<double>{s[0] * (1 + 1e-6), s[1] + 1e-9};
+  };
+  const auto alpha = alpha_levels(5);
+  const auto o =
+    OptimisationMethod(closed_form_settings())
+      .bounds(three_parameters, alpha, reduced, {"S1", "S2"}, self);
+  const BoundProofs             proofs = prove_bounds(o, exact, self);
+  std::set<std::vector<double>> distinct;
+  for (unsigned int k = 0; k < 2; ++k)
+    for (unsigned int l = 0; l < alpha.size(); ++l)
+      {
+        distinct.insert(o.argmin[k][l]);
+        distinct.insert(o.argmax[k][l]);
+        const BoundProof &lo = proofs.lower[k][l];
+        EXPECT_EQ(lo.reduced, o.bounds[k][l].lower);
+        EXPECT_EQ(lo.exact, monotone(o.argmin[k][l])[k]);
+        EXPECT_NEAR(lo.difference(),
+                    k == 0 ? 1e-6 * lo.exact : 1e-9,
+                    1e-15 * std::abs(lo.exact) + 1e-15);
+        EXPECT_EQ(proofs.upper[k][l].exact, monotone(o.argmax[k][l])[k]);
+      }
+  EXPECT_EQ(proofs.n_evaluations, distinct.size());
+  EXPECT_EQ(calls, distinct.size());
+  EXPECT_LT(distinct.size(), 4u * alpha.size()); // bounds share arguments
+
+  // lower bounds against a reference lower bound of 1 on a range of 10
+  const auto short_of = compare_with_reference(1.5, 1.5, 1, false, 10);
+  EXPECT_DOUBLE_EQ(short_of.short_of_reference, 0.05);
+  const auto missed = compare_with_reference(0.5, 0.6, 1, false, 10);
+  EXPECT_DOUBLE_EQ(missed.reference_missed, 0.04);
+  EXPECT_EQ(missed.outside_not_verified, 0.);
+  const auto reduction = compare_with_reference(0.5, 1.2, 1, false, 10);
+  EXPECT_EQ(reduction.reference_missed, 0.);
+  EXPECT_DOUBLE_EQ(reduction.outside_not_verified, 0.05);
 }
 
 TEST(IntervalMethods, CacheCountsDistinctEvaluations)
@@ -681,6 +884,58 @@ end
   EXPECT_LT(worst_of[0], 5e-5);
   EXPECT_LT(worst_of[1], 2e-6);
   EXPECT_LT(worst_of[1], worst_of[0]);
+}
+
+// A density cannot change a static answer: the model says so, does not
+// vary it (no modes are needed for it), answers the same bits whatever its
+// value, and the numbers to propagate make it crisp, so every interval
+// method gives outputs that are crisp in it (before, a fuzzy zone density
+// gave u_x a spurious interval of its reduction error).
+TEST(FuzzyContactModel, ADensityIsInertAndGivesCrispOutputs)
+{
+  Scene scene = Scene::read(source_dir + "/prm/overlap.prm");
+  scene.components[0].implicit_zone = false;
+  scene.components[0].zones         = {
+            MaterialZone{"root", {{0, 0.08}}, {{-1, 1}}, 210e9, 0.3, 7900},
+            MaterialZone{"rest", {{0.08, 0.2}}, {{-1, 1}}, 210e9, 0.3, 7900}};
+  const FuzzyParameterSet set = fuzzy_parameters(scene, R"(
+set fuzzy parameters = P1.rest.rho, P1.tip.force
+subsection Fuzzy parameter P1.rest.rho
+  set values   = 0.6, 1, 1.4
+  set relative = true
+end
+subsection Fuzzy parameter P1.tip.force
+  set values = 10e3, 50e3, 100e3
+end
+)");
+  FuzzyContactModel       model(scene, set, default_outputs, coarse_settings());
+  ASSERT_EQ(model.inert().size(), 2u);
+  EXPECT_NE(model.inert()[0].find("a density"), std::string::npos);
+  EXPECT_TRUE(model.inert()[1].empty());
+  EXPECT_NE(model.skipped().find("no modal analysis"), std::string::npos);
+  const auto light = model.reduced({0.6 * 7900, 5e4});
+  EXPECT_EQ(model.reduced({1.4 * 7900, 5e4}), light);
+  EXPECT_LT(largest_difference(light, model.full_order({1.4 * 7900, 5e4})),
+            1e-7);
+
+  const std::vector<FuzzyNumber> numbers = model.effective_numbers();
+  EXPECT_EQ(numbers[0].alpha_cut(0).width(), 0.);
+  EXPECT_EQ(numbers[1].alpha_cut(0).width(), 90e3);
+  const Response reduced = [&](const std::vector<double> &p) {
+    return model.reduced(p);
+  };
+  const auto o = OptimisationMethod().bounds(numbers,
+                                             {0., 1.},
+                                             reduced,
+                                             {"ux", "uy", "Fn", "Ft"},
+                                             self);
+  for (unsigned int k = 0; k < 4; ++k)
+    {
+      EXPECT_EQ(o.argmin[k][0][0], 7900.);
+      EXPECT_EQ(o.argmax[k][0][0], 7900.);
+      // the core (a point) is crisp: its bounds are one value
+      EXPECT_EQ(o.bounds[k][1].lower, o.bounds[k][1].upper);
+    }
 }
 
 TEST(FuzzyContactModel, FrictionAndGapParameters)

@@ -44,6 +44,33 @@ add_test(NAME step-4.three_beams
     -DJSON_CHECKS=${CMAKE_CURRENT_SOURCE_DIR}/check_step-4_three_beams.cmake
     -P ${CMAKE_CURRENT_SOURCE_DIR}/run_program.cmake)
 
+# Kinked responses (prm/step-4-kinked.prm on coarse meshes): friction that
+# reverses inside the range of the load and a gap that opens the contact,
+# against a dense Extension Principle (20 points per parameter, 6 levels,
+# reused factorisations: exact for a body's modulus, loads and gaps).
+add_test(NAME step-4.kinked
+  COMMAND ${CMAKE_COMMAND}
+    -DPROGRAM=$<TARGET_FILE:step-4>
+    -DPRM=${CMAKE_SOURCE_DIR}/prm/step-4-kinked.prm
+    -DSCENE=${CMAKE_SOURCE_DIR}/prm/kinked.prm
+    -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/work/step-4.kinked
+    -DOUTPUT=step-4-kinked-output
+    "-DEDIT_FILE=step"
+    "-DEDIT_FROM=set mesh refinements       = 2"
+    "-DEDIT_TO=set mesh refinements       = 0"
+    "-DEDIT2_FILE=step"
+    "-DEDIT2_FROM=set points per dimension = 4"
+    "-DEDIT2_TO=set points per dimension = 20"
+    "-DEDIT3_FILE=step"
+    "-DEDIT3_FROM=set reuse factorisations = false"
+    "-DEDIT3_TO=set reuse factorisations = true"
+    "-DEDIT4_FILE=step"
+    "-DEDIT4_FROM=set number of alpha levels = 11"
+    "-DEDIT4_TO=set number of alpha levels = 6"
+    -DEXPECT=success
+    -DJSON_CHECKS=${CMAKE_CURRENT_SOURCE_DIR}/check_step-4_kinked.cmake
+    -P ${CMAKE_CURRENT_SOURCE_DIR}/run_program.cmake)
+
 # Two MPI processes give the same bounds as one.
 add_test(NAME step-4.mpi_np2_same_as_np1
   COMMAND ${CMAKE_COMMAND}

@@ -1,13 +1,13 @@
-// The optimisation method (optimisation_method.h): the chains of local
-// optimisations (local_optimisation.h), the checks for a non-monotone
-// response and the multi-start, and the gathering over MPI ranks.
+// The optimisation method (optimisation_method.h): the chains of global
+// stages (global_stage.h) and local optimisations (local_optimisation.h),
+// the checks for a non-monotone response and the multi-start, and the
+// gathering over MPI ranks. Its settings: optimisation_settings.cc.
 
-#include <fuzzycontact/base/input.h>
+#include <fuzzycontact/fuzzy/global_stage.h>
 #include <fuzzycontact/fuzzy/local_optimisation.h>
 #include <fuzzycontact/fuzzy/optimisation_method.h>
 
 #include <deal.II/base/exceptions.h>
-#include <deal.II/base/patterns.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/vector.h>
 
@@ -22,93 +22,6 @@
 
 namespace FuzzyContact
 {
-  void
-  OptimisationSettings::declare_parameters(ParameterHandler &prm)
-  {
-    using Patterns::Tools::to_string;
-    const OptimisationSettings defaults;
-    prm.enter_subsection("Optimisation");
-    prm.declare_entry("algorithm",
-                      defaults.algorithm,
-                      Patterns::Selection("spectral gradient|quasi-newton"),
-                      "ROL's bound-constrained algorithm: projected spectral "
-                      "gradient (Barzilai-Borwein steps) or a projected "
-                      "quasi-Newton (L-BFGS) line search.");
-    prm.declare_entry("gradient tolerance",
-                      to_string(defaults.gradient_tolerance),
-                      Patterns::Double(),
-                      "ROL's tolerance on the projected gradient of the "
-                      "scaled objective S / |S(nominal)|.");
-    prm.declare_entry("step tolerance",
-                      to_string(defaults.step_tolerance),
-                      Patterns::Double(),
-                      "ROL's tolerance on the step in normalised parameters.");
-    prm.declare_entry("iteration limit",
-                      to_string(defaults.max_iterations),
-                      Patterns::Integer(),
-                      "ROL iterations per output, bound and alpha level.");
-    prm.declare_entry("finite difference step",
-                      to_string(defaults.finite_difference_step),
-                      Patterns::Double(),
-                      "Step of the finite-difference sensitivities, relative "
-                      "to the width of each parameter's support.");
-    prm.declare_entry("interior tolerance",
-                      to_string(defaults.interior_tolerance),
-                      Patterns::Double(),
-                      "An optimum further than this (relative to the "
-                      "alpha-cut width) from both ends of a parameter's "
-                      "interval counts as interior.");
-    prm.declare_entry("response tolerance",
-                      to_string(defaults.response_tolerance),
-                      Patterns::Double(),
-                      "Relative accuracy of the model's outputs (the FL2C "
-                      "tolerance makes them accurate to about that much): "
-                      "smaller differences are no evidence of a non-monotone "
-                      "response. Keep the finite difference step well above "
-                      "it.");
-    prm.declare_entry("multi-start fallback",
-                      to_string(defaults.fallback),
-                      Patterns::Bool(),
-                      "On a detected non-monotone response, restart the "
-                      "local optimisation from every vertex and the centre.");
-    prm.leave_subsection();
-  }
-
-
-  void
-  OptimisationSettings::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Optimisation");
-    algorithm          = prm.get("algorithm");
-    gradient_tolerance = Input::positive(prm.get_double("gradient tolerance"),
-                                         "Optimisation: gradient tolerance");
-    step_tolerance     = Input::positive(prm.get_double("step tolerance"),
-                                     "Optimisation: step tolerance");
-    const long iterations = prm.get_integer("iteration limit");
-    AssertThrow(iterations >= 1,
-                ExcMessage("Optimisation: iteration limit must be at least "
-                           "1."));
-    max_iterations = iterations;
-    finite_difference_step =
-      Input::positive(prm.get_double("finite difference step"),
-                      "Optimisation: finite difference "
-                      "step");
-    AssertThrow(finite_difference_step < 0.1,
-                ExcMessage("Optimisation: finite difference step must be "
-                           "below 0.1 (it is relative to the support width)."));
-    interior_tolerance = Input::positive(prm.get_double("interior tolerance"),
-                                         "Optimisation: interior tolerance");
-    response_tolerance = Input::positive(prm.get_double("response tolerance"),
-                                         "Optimisation: response tolerance");
-    AssertThrow(finite_difference_step > 10 * response_tolerance,
-                ExcMessage("Optimisation: the finite difference step must be "
-                           "well above the response tolerance (10 times at "
-                           "least), or the sensitivities are noise."));
-    fallback = prm.get_bool("multi-start fallback");
-    prm.leave_subsection();
-  }
-
-
   namespace
   {
     using namespace LocalOptimisation;
@@ -141,13 +54,14 @@ namespace FuzzyContact
     {
       std::vector<double>              value;    // per level, unscaled
       std::vector<std::vector<double>> argument; // per level, all parameters
+      std::vector<BoundQuality>        quality;  // per level
       std::vector<std::string>         notes;
 
       template <class Archive>
       void
       serialize(Archive &ar, const unsigned int)
       {
-        ar &value &argument &notes;
+        ar &value &argument &quality &notes;
       }
     };
 
@@ -176,24 +90,37 @@ namespace FuzzyContact
       {
       }
 
-      // The levels in @p order (from the core down), starting at @p centre.
+      // The levels in @p order (from the core down), starting at @p centre,
+      // with the global stage's @p design (in the unit box).
       ChainResult
       run(const std::vector<double>       &alpha,
           const std::vector<unsigned int> &order,
-          const VectorType                &centre) const;
+          const VectorType                &centre,
+          const std::vector<VectorType>   &design) const;
 
     private:
+      LocalOptimum
+      local_stage(OutputObjective              &objective,
+                  const std::vector<Candidate> &pool,
+                  const VectorType             &lo,
+                  const VectorType             &hi,
+                  unsigned int                 &n_starts) const;
       bool
       check_interval_ends(OutputObjective          &objective,
                           LocalOptimum             &best,
                           const VectorType         &lo,
                           const VectorType         &hi,
                           std::vector<std::string> &findings) const;
-      bool
-      vertex_is_better(OutputObjective    &objective,
-                       const LocalOptimum &best,
-                       const VectorType   &lo,
-                       const VectorType   &hi) const;
+      void
+      refine(OutputObjective  &objective,
+             LocalOptimum     &best,
+             const VectorType &lo,
+             const VectorType &hi,
+             const double      range,
+             BoundQuality     &quality) const;
+      std::string
+      iteration_limit_note(const std::string  &level,
+                           const BoundQuality &quality) const;
       std::string
       multi_start(OutputObjective  &objective,
                   LocalOptimum     &best,
@@ -205,7 +132,9 @@ namespace FuzzyContact
                    const VectorType               &lo,
                    const VectorType               &hi,
                    const std::string              &level,
-                   const std::vector<std::string> &findings) const;
+                   const std::vector<std::string> &findings,
+                   const bool                      missed,
+                   const unsigned int              n_starts) const;
       void
       check_sensitivity_signs(const std::vector<VectorType> &gradients,
                               ChainResult                   &result) const;
@@ -224,12 +153,16 @@ namespace FuzzyContact
     ChainResult
     Chain::run(const std::vector<double>       &alpha,
                const std::vector<unsigned int> &order,
-               const VectorType                &centre) const
+               const VectorType                &centre,
+               const std::vector<VectorType>   &design) const
     {
       ChainResult result;
       result.value.resize(alpha.size());
       result.argument.resize(alpha.size());
-      VectorType              start = centre;
+      result.quality.resize(alpha.size());
+      // The best points of the level above lie in this level's box: they
+      // seed it, so a lower level's interval contains the upper's.
+      std::vector<VectorType> seeds{centre};
       std::vector<VectorType> gradients;
       for (const unsigned int l : order)
         {
@@ -242,35 +175,161 @@ namespace FuzzyContact
                                     settings.finite_difference_step,
                                     lo,
                                     hi);
-          LocalOptimum      best = minimise(objective, start, lo, hi, settings);
           const std::string level = what + ", alpha = " + format(alpha[l]);
 
-          // Is the response monotone here? An interior optimum, or a vertex
-          // better than the local optimum, says it is not.
+          // The global stage, then the local optimisation from its best.
+          const std::vector<Candidate> pool =
+            global_stage(objective, design, seeds, lo, hi);
+          const double range    = pool.back().value - pool.front().value;
+          unsigned int n_starts = 0;
+          LocalOptimum best = local_stage(objective, pool, lo, hi, n_starts);
+          BoundQuality quality;
+          quality.iteration_limit = !best.converged;
+
+          // Is the response monotone here? An interior optimum, or a point
+          // of the global stage better than the local optimum, says not.
           std::vector<std::string> findings;
           const bool               moved =
             check_interval_ends(objective, best, lo, hi, findings);
-          if (vertex_is_better(objective, best, lo, hi))
-            findings.push_back("a vertex of the box is better than the "
-                               "local optimum");
-          gradients.push_back(best.gradient);
+          const double noise =
+            settings.response_tolerance * std::max(1., std::abs(best.value));
+          const bool missed = pool.front().value < best.value - noise;
+          if (missed)
+            findings.push_back(std::string(pool.front().vertex
+                                             ? "a vertex of the box"
+                                             : "a point of the global stage") +
+                               " is better than the local optimum");
           if (!findings.empty())
-            result.notes.push_back(
-              non_monotone(objective, best, lo, hi, level, findings));
+            result.notes.push_back(non_monotone(objective,
+                                                best,
+                                                lo,
+                                                hi,
+                                                level,
+                                                findings,
+                                                missed,
+                                                n_starts));
+          if (pool.front().value < best.value)
+            {
+              best.x     = pool.front().x;
+              best.value = pool.front().value;
+            }
+          objective.gradient_at(best.gradient, best.x);
+          refine(objective, best, lo, hi, range, quality);
+          gradients.push_back(best.gradient);
 
-          if (moved || !best.converged)
+          if (moved)
             result.notes.push_back(
               level + ": the local optimiser stopped short of the optimum (" +
               (best.converged ? "converged to its tolerances"
                               : "at its iteration limit") +
               "); the ends of the parameter intervals were better and the "
               "optimum was moved there");
+          else if (quality.iteration_limit)
+            result.notes.push_back(iteration_limit_note(level, quality));
           result.value[l]    = sign * best.value * scale;
           result.argument[l] = normalisation.parameters(best.x);
-          start              = best.x;
+          result.quality[l]  = quality;
+          seeds              = {best.x};
+          for (unsigned int c = 0; c < std::min<std::size_t>(2, pool.size());
+               ++c)
+            seeds.push_back(pool[c].x);
         }
       check_sensitivity_signs(gradients, result);
       return result;
+    }
+
+
+    // The local optimisation from the best points of the global stage
+    // (local_starts()); @p n_starts says from how many.
+    LocalOptimum
+    Chain::local_stage(OutputObjective              &objective,
+                       const std::vector<Candidate> &pool,
+                       const VectorType             &lo,
+                       const VectorType             &hi,
+                       unsigned int                 &n_starts) const
+    {
+      const std::vector<VectorType> starts =
+        local_starts(pool, lo, hi, settings.local_starts);
+      n_starts          = starts.size();
+      LocalOptimum best = minimise(objective, starts[0], lo, hi, settings);
+      for (unsigned int s = 1; s < starts.size(); ++s)
+        {
+          LocalOptimum candidate =
+            minimise(objective, starts[s], lo, hi, settings);
+          if (candidate.value < best.value)
+            best = candidate;
+        }
+      return best;
+    }
+
+
+    // The shape of the optimum, and the pattern search where it has
+    // interior coordinates or a projected gradient (ROL stopped short).
+    void
+    Chain::refine(OutputObjective  &objective,
+                  LocalOptimum     &best,
+                  const VectorType &lo,
+                  const VectorType &hi,
+                  const double      range,
+                  BoundQuality     &quality) const
+    {
+      const double noise =
+        settings.response_tolerance * std::max(1., std::abs(best.value));
+      const auto shape = [&]() {
+        shape_of_optimum(objective,
+                         normalisation,
+                         best.x,
+                         best.value,
+                         best.gradient,
+                         lo,
+                         hi,
+                         settings.interior_tolerance,
+                         range,
+                         noise,
+                         quality);
+      };
+      shape();
+      if (quality.interior.empty() && quality.projected_gradient == 0)
+        return;
+      const VectorType    before = best.x;
+      const PatternSearch search = pattern_search(objective,
+                                                  best.x,
+                                                  best.value,
+                                                  lo,
+                                                  hi,
+                                                  1. / 16,
+                                                  settings.refinement_step,
+                                                  noise);
+      quality.refined            = true;
+      quality.last_change = search.last_change / (range > 0 ? range : 1.);
+      quality.final_step  = search.final_step;
+      if (best.x != before)
+        {
+          objective.gradient_at(best.gradient, best.x);
+          shape();
+        }
+    }
+
+
+    // What is true of a bound whose winning local optimisation stopped at
+    // ROL's iteration limit.
+    std::string
+    Chain::iteration_limit_note(const std::string  &level,
+                                const BoundQuality &quality) const
+    {
+      std::string note = level + ": ROL stopped at its iteration limit (" +
+                         std::to_string(settings.max_iterations) +
+                         " iterations); no end of a parameter interval was "
+                         "better, ";
+      if (quality.refined)
+        note += "and the pattern search refined the point: the bound changed "
+                "by " +
+                format(quality.last_change) +
+                " of the output's range over its last three refinements";
+      else
+        note += "and the bound lies at a vertex with a projected gradient of " +
+                format(quality.projected_gradient);
+      return note;
     }
 
 
@@ -329,40 +388,32 @@ namespace FuzzyContact
     }
 
 
-    // True if a vertex of the box (for fewer than 20 free parameters) is
-    // better than @p best by more than the response tolerance.
-    bool
-    Chain::vertex_is_better(OutputObjective    &objective,
-                            const LocalOptimum &best,
-                            const VectorType   &lo,
-                            const VectorType   &hi) const
-    {
-      const unsigned int n           = lo.size();
-      double             best_vertex = std::numeric_limits<double>::infinity();
-      if (n > 0 && n < 20)
-        for (unsigned long corner = 0; corner < (1ul << n); ++corner)
-          best_vertex =
-            std::min(best_vertex, objective.at(vertex(corner, lo, hi)));
-      return best_vertex < best.value - settings.response_tolerance *
-                                          std::max(1., std::abs(best.value));
-    }
-
-
     // The note on a non-monotone response at one level, and the answer to
-    // it: the multi-start, unless the fallback is disabled.
+    // it: without a global stage, or when the local optimum was @p missed
+    // by it (a better point of the global stage), the multi-start, unless
+    // the fallback is disabled; else what the global stage did.
     std::string
     Chain::non_monotone(OutputObjective                &objective,
                         LocalOptimum                   &best,
                         const VectorType               &lo,
                         const VectorType               &hi,
                         const std::string              &level,
-                        const std::vector<std::string> &findings) const
+                        const std::vector<std::string> &findings,
+                        const bool                      missed,
+                        const unsigned int              n_starts) const
     {
       std::string note = level + ": non-monotone response (";
       for (unsigned int f = 0; f < findings.size(); ++f)
         note += (f ? "; " : "") + findings[f];
       note += ")";
-      if (settings.fallback)
+      if (settings.global_points > 0 && !missed)
+        note += "; the global stage (" +
+                std::to_string(settings.global_points) + " design points" +
+                (normalisation.n_free() < 20 ? ", the vertices" : "") +
+                ", the optima of the level above) and " +
+                std::to_string(n_starts) +
+                " local start(s) found no better point";
+      else if (settings.fallback)
         note += multi_start(objective, best, lo, hi);
       else
         note += "; no fallback (disabled)";
@@ -498,19 +549,24 @@ namespace FuzzyContact
       result.argmin.assign(n_outputs,
                            std::vector<std::vector<double>>(alpha.size()));
       result.argmax = result.argmin;
+      result.lower_quality.assign(n_outputs,
+                                  std::vector<BoundQuality>(alpha.size()));
+      result.upper_quality = result.lower_quality;
       for (const auto &[chain, r] : chains)
         {
           const unsigned int k = chain / 2;
           for (unsigned int l = 0; l < alpha.size(); ++l)
             if (chain % 2)
               {
-                result.bounds[k][l].upper = r.value[l];
-                result.argmax[k][l]       = r.argument[l];
+                result.bounds[k][l].upper  = r.value[l];
+                result.argmax[k][l]        = r.argument[l];
+                result.upper_quality[k][l] = r.quality[l];
               }
             else
               {
-                result.bounds[k][l].lower = r.value[l];
-                result.argmin[k][l]       = r.argument[l];
+                result.bounds[k][l].lower  = r.value[l];
+                result.argmin[k][l]        = r.argument[l];
+                result.lower_quality[k][l] = r.quality[l];
               }
           for (const std::string &note : r.notes)
             result.notes.push_back(note);
@@ -561,6 +617,10 @@ namespace FuzzyContact
     const std::vector<unsigned int> order = levels_from_the_core(alpha);
     const VectorType centre = centre_of_the_core(normalisation, parameters);
     const std::vector<double> nominal = cache(normalisation.parameters(centre));
+    const std::vector<VectorType> design =
+      latin_hypercube(settings_.global_points,
+                      normalisation.n_free(),
+                      20261124);
     AssertThrow(nominal.size() == n_outputs,
                 ExcMessage(
                   "The response returned " + std::to_string(nominal.size()) +
@@ -579,7 +639,7 @@ namespace FuzzyContact
                         chain % 2,
                         nominal[k],
                         output_names[k]);
-        mine.emplace_back(chain, one.run(alpha, order, centre));
+        mine.emplace_back(chain, one.run(alpha, order, centre, design));
       }
 
     unsigned long n_evaluations = cache.n_evaluations();

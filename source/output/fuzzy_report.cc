@@ -108,6 +108,9 @@ namespace FuzzyContact
             }
           out << "\n";
         }
+      if (!r.optimisation.lower_quality.empty())
+        FuzzyStudyReport::proofs(r, k, out, entry);
+      FuzzyStudyReport::comparison(r, k, out, entry);
       return entry;
     }
 
@@ -116,7 +119,8 @@ namespace FuzzyContact
     void
     cost(const FuzzyStudyResults &r, Report &report, nlohmann::json &json)
     {
-      const double       study = r.offline_time + r.optimisation.wall_time;
+      const double proofs = r.has_proofs ? r.proofs.wall_time : 0.;
+      const double study  = r.offline_time + r.optimisation.wall_time + proofs;
       std::ostringstream out;
       out << "\ncost (wall time, " << r.n_processes << " process(es))\n"
           << "  offline (model built once)            " << std::fixed
@@ -128,6 +132,15 @@ namespace FuzzyContact
       json["time_s"]["optimisation"]      = r.optimisation.wall_time;
       json["time_s"]["fuzzy_study"]       = study;
       json["evaluations"]["optimisation"] = r.optimisation.n_evaluations;
+      if (r.has_proofs)
+        {
+          out << "  proofs, full order at the bounds      " << std::setw(8)
+              << proofs << " s  " << r.proofs.n_evaluations
+              << " evaluations (the distinct arguments of "
+              << 2 * r.outputs.size() * r.alpha.size() << " bounds)\n";
+          json["time_s"]["proofs"]      = proofs;
+          json["evaluations"]["proofs"] = r.proofs.n_evaluations;
+        }
       if (r.has_vertex)
         {
           out << "  vertex method, reduced model          " << std::setw(8)
@@ -145,7 +158,8 @@ namespace FuzzyContact
           out << "  Extension Principle, full order       " << std::setw(8)
               << r.reference.wall_time << " s  " << r.reference.n_evaluations
               << " evaluations (" << kind << ")\n"
-              << "  the fuzzy study (offline + optimisation) takes "
+              << "  the fuzzy study (offline + optimisation"
+              << (r.has_proofs ? " + proofs" : "") << ") takes "
               << std::setprecision(2) << study << " s: ";
           if (ratio >= 1)
             out << std::setprecision(1) << ratio
@@ -203,6 +217,9 @@ namespace FuzzyContact
           {{"name", p.quantity.name},
            {"membership", p.number.to_string()},
            {"points", p.number.points()}});
+      const std::string inert = FuzzyStudyReport::inert(r, json);
+      if (!inert.empty())
+        report.say("\nparameters that cannot change the answer:\n" + inert);
       json["outputs"] = nlohmann::json::array();
       for (unsigned int k = 0; k < r.outputs.size(); ++k)
         {
@@ -216,8 +233,8 @@ namespace FuzzyContact
       notes << "\nmonotonicity: ";
       if (r.optimisation.notes.empty())
         notes << "no non-monotone response detected (no interior optimum, "
-                 "no vertex better than a local optimum, no sensitivity "
-                 "changing sign)\n";
+                 "no point of the global stage better than a local optimum, "
+                 "no sensitivity changing sign)\n";
       else
         {
           notes << r.optimisation.notes.size() << " finding(s):\n";

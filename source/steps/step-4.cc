@@ -19,6 +19,8 @@
 //    the FL2C fuzzy regulator), built once;
 //  - the bounds come from bound-constrained optimisation (Trilinos ROL)
 //    started from the optimum of the level above, the paper's method;
+//  - every bound's argument is evaluated once more by the exact full-order
+//    solver (the reduction error at the bound);
 //  - they are checked against the vertex method on the same reduced model
 //    and against the Extension Principle: the exact full-order contact
 //    solver on a dense grid of every box.
@@ -37,6 +39,7 @@
 #include <fuzzycontact/base/parameter_file.h>
 #include <fuzzycontact/base/program.h>
 #include <fuzzycontact/base/progress.h>
+#include <fuzzycontact/fuzzy/bound_proof.h>
 #include <fuzzycontact/fuzzy/extension_principle.h>
 #include <fuzzycontact/fuzzy/fuzzy_number.h>
 #include <fuzzycontact/fuzzy/fuzzy_parameters.h>
@@ -317,7 +320,9 @@ namespace Step4
   void
   FuzzyStudy::compute_bounds()
   {
-    const std::vector<FuzzyNumber> numbers = parameters.fuzzy.numbers();
+    // Parameters that cannot change the answer are crisp here.
+    const std::vector<FuzzyNumber> numbers = model->effective_numbers();
+    results.inert                          = model->inert();
     const std::vector<std::string> names   = model->observations().names();
     const Response                 reduced = [&](const std::vector<double> &p) {
       return model->reduced(p);
@@ -341,6 +346,13 @@ namespace Step4
     results.optimisation = bounds(OptimisationMethod(parameters.optimisation),
                                   reduced,
                                   "optimisation (reduced model)");
+    {
+      // Every bound's proof: its argument once more, exactly.
+      TimerOutput::Scope scope(timer, "proofs (full order at the bounds)");
+      model->set_reuse_factorisations(true);
+      results.proofs     = prove_bounds(results.optimisation, exact, comm);
+      results.has_proofs = true;
+    }
     if (parameters.vertex_method)
       {
         results.vertex =
@@ -350,27 +362,23 @@ namespace Step4
     if (parameters.extension_principle)
       {
         model->set_reuse_factorisations(parameters.reuse_factorisations);
-        report.say(
-          "Extension Principle: " +
-          std::to_string(
-            extension_principle_size(numbers,
-                                     results.alpha,
-                                     parameters.points_per_dimension)) +
-          " exact full-order solves (" +
-          std::to_string(parameters.points_per_dimension) +
-          " points per parameter and level; " +
-          (parameters.reuse_factorisations ? "factorisations reused where exact"
-                                           : "independent analyses") +
-          ")\n");
+        const unsigned long n_samples =
+          extension_principle_size(numbers,
+                                   results.alpha,
+                                   parameters.points_per_dimension);
+        report.say("Extension Principle: " + std::to_string(n_samples) +
+                   " exact full-order solves (" +
+                   std::to_string(parameters.points_per_dimension) +
+                   " points per parameter and level; " +
+                   (parameters.reuse_factorisations
+                      ? "factorisations reused where exact"
+                      : "independent analyses") +
+                   ")\n");
         const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
         progress                   = std::make_unique<Progress>(
           "Extension Principle, full-order solves" +
             std::string(n_ranks > 1 ? " of the first rank" : ""),
-          (extension_principle_size(numbers,
-                                    results.alpha,
-                                    parameters.points_per_dimension) +
-           n_ranks - 1) /
-            n_ranks);
+          (n_samples + n_ranks - 1) / n_ranks);
         results.reference =
           bounds(ExtensionPrinciple(parameters.points_per_dimension),
                  exact,

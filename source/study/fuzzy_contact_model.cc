@@ -89,9 +89,18 @@ namespace FuzzyContact
                                             timer);
     outputs = std::make_unique<Observations>(output_names, *bodies);
 
+    // A parameter that cannot change the static answer is not varied.
     std::vector<VaryingQuantity> varying;
     for (const FuzzyParameter &p : fuzzy.parameters())
-      varying.push_back({p.quantity, p.number.alpha_cut(0)});
+      {
+        inert_parameters.push_back(
+          p.quantity.kind == SceneQuantity::Kind::density
+            ? "a density: the contact problem is static, its answer "
+              "depends on the stiffness and the loads only"
+            : "");
+        if (inert_parameters.back().empty())
+          varying.push_back({p.quantity, p.number.alpha_cut(0)});
+      }
     reduced_model = std::make_unique<ReducedOrderModel>(
       *bodies,
       modes_for(varying, settings, timer, comm),
@@ -155,6 +164,24 @@ namespace FuzzyContact
   }
 
 
+  const std::vector<std::string> &
+  FuzzyContactModel::inert() const
+  {
+    return inert_parameters;
+  }
+
+
+  std::vector<FuzzyNumber>
+  FuzzyContactModel::effective_numbers() const
+  {
+    std::vector<FuzzyNumber> numbers = fuzzy.numbers();
+    for (unsigned int i = 0; i < numbers.size(); ++i)
+      if (!inert_parameters[i].empty())
+        numbers[i] = FuzzyNumber::crisp(numbers[i].alpha_cut(1).midpoint());
+    return numbers;
+  }
+
+
   const Observations &
   FuzzyContactModel::observations() const
   {
@@ -173,7 +200,13 @@ namespace FuzzyContact
                   ExcMessage("Fuzzy parameter " +
                              fuzzy.parameters()[i].quantity.name +
                              ": the value to evaluate is not finite."));
-    return fuzzy.state(scene, values);
+    // Inert parameters at their nominal value (they cannot change the
+    // answer; the reduced model was not built to vary them).
+    std::vector<double> effective = values;
+    for (unsigned int i = 0; i < values.size(); ++i)
+      if (!inert_parameters[i].empty())
+        effective[i] = fuzzy.parameters()[i].quantity.value(scene);
+    return fuzzy.state(scene, effective);
   }
 
 

@@ -71,6 +71,49 @@ namespace FuzzyContact
   alpha_box(const std::vector<FuzzyNumber> &parameters, const double alpha);
 
   /**
+   * How one bound (one output, level and side) of the optimisation method
+   * was found and how converged it is (optimisation_method.h).
+   */
+  struct BoundQuality
+  {
+    /** "vertex", "boundary" (some coordinates inside) or "interior". */
+    std::string where = "vertex";
+    /** Parameters (indices among all) strictly inside their interval. */
+    std::vector<unsigned int> interior;
+    /**
+     * Interior parameters in which the response has a kink at the bound:
+     * its one-sided slopes differ by more than a hundredth of the output's
+     * range over the box per interval width.
+     */
+    std::vector<unsigned int> kinks;
+    /**
+     * Norm of the projected finite-difference gradient at the bound, per
+     * unit of the normalised parameters, relative to the output's range
+     * over the box (zero: first-order optimal).
+     */
+    double projected_gradient = 0;
+    /**
+     * True if the pattern search refined the bound; then the change of the
+     * bound over its last three halvings of the step (relative to the
+     * output's range over the box) and its final step (relative to the
+     * intervals' widths).
+     */
+    bool   refined     = false;
+    double last_change = 0;
+    double final_step  = 0;
+    /** ROL stopped at its iteration limit from the start that won. */
+    bool iteration_limit = false;
+
+    template <class Archive>
+    void
+    serialize(Archive &ar, const unsigned int)
+    {
+      ar &where &interior &kinks &projected_gradient &refined &last_change
+        &final_step &iteration_limit;
+    }
+  };
+
+  /**
    * Interval bounds of every output at every level, and where they are
    * attained.
    */
@@ -87,6 +130,11 @@ namespace FuzzyContact
     double wall_time = 0;
     /** What was detected (non-monotone responses) and done about it. */
     std::vector<std::string> notes;
+    /**
+     * How each bound was found: [output][level], lower and upper (the
+     * optimisation method only; empty for the sampling methods).
+     */
+    std::vector<std::vector<BoundQuality>> lower_quality, upper_quality;
   };
 
   /**

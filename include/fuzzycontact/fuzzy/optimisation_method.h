@@ -13,13 +13,24 @@
 // sensitivities (central, one-sided at the ends of the box). Evaluations
 // are cached, so the points several chains share are computed once.
 //
+// Before the local optimisation, a global stage evaluates a space-filling
+// design over the level's box, its vertices and the optima of the level
+// above (global_stage.h); the local optimisation starts from the best of
+// them (from several when the best is not a vertex), so a lower level's
+// interval contains the upper's. A bound with coordinates inside their
+// intervals is refined by a pattern search, which a kink does not stop,
+// and every bound is classified (vertex, boundary or interior, the
+// parameters with a kink) with a measure of its convergence (the projected
+// gradient, the change over the pattern search's last refinements).
+//
 // Cheap when the response is smooth and monotone; a non-monotone response
 // is detected and answered at every level:
 //  - an optimum inside a parameter's interval is compared with the two
 //    ends of the interval (the other coordinates kept): an interior
 //    optimum, or an interior stationary point that is no optimum, is
 //    reported; an end that is better (or as good) is taken;
-//  - the vertices of the box are compared with the optimum;
+//  - the vertices of the box and the design points are compared with the
+//    optimum;
 //  - on either finding, a multi-start from every vertex and the centre of
 //    the box keeps the best local optimum (unless the fallback is off);
 //  - a sensitivity that changes sign between the levels' optima is
@@ -90,6 +101,24 @@ namespace FuzzyContact
     double response_tolerance = 1e-7;
     /** Multi-start on detected non-monotonicity. */
     bool fallback = true;
+    /**
+     * Points of the space-filling design (a Latin hypercube with a fixed
+     * seed) evaluated over each level's box before the local optimisation
+     * (0: vertices and the level above's optima only).
+     */
+    unsigned int global_points = 32;
+    /**
+     * Local optimisations per bound and level when the best point of the
+     * global stage is not a vertex (from the best points, a quarter of the
+     * box apart); one from the best point otherwise.
+     */
+    unsigned int local_starts = 2;
+    /**
+     * The pattern search that refines a bound with interior coordinates
+     * stops when its step falls below this fraction of the intervals'
+     * widths.
+     */
+    double refinement_step = 1e-6;
 
     /** Declares the subsection Optimisation, with the values above. */
     static void

@@ -9,6 +9,7 @@
 #ifndef fuzzycontact_output_fuzzy_report_h
 #define fuzzycontact_output_fuzzy_report_h
 
+#include <fuzzycontact/fuzzy/bound_proof.h>
 #include <fuzzycontact/fuzzy/fuzzy_parameters.h>
 #include <fuzzycontact/fuzzy/interval_method.h>
 #include <fuzzycontact/output/output_files.h>
@@ -17,6 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -39,6 +41,11 @@ namespace FuzzyContact
     /** The reference kept its factorisations (else independent analyses). */
     bool   reference_reuses = false;
     double offline_time     = 0;
+    /** The exact value at the argument of every optimisation bound. */
+    BoundProofs proofs;
+    bool        has_proofs = false;
+    /** Per parameter: why it cannot change the answer (empty: it can). */
+    std::vector<std::string> inert;
   };
 
   namespace FuzzyStudyReport
@@ -59,6 +66,31 @@ namespace FuzzyContact
     bounds(const FuzzyStudyResults &results,
            Report                  &report,
            nlohmann::json          &json);
+
+    /**
+     * The proof and the shape of every optimisation bound of output @p k
+     * (fuzzy_report_bounds.cc): a table in @p out, arrays in @p entry.
+     */
+    void
+    proofs(const FuzzyStudyResults &results,
+           const unsigned int       k,
+           std::ostringstream      &out,
+           nlohmann::json          &entry);
+
+    /**
+     * Output @p k's optimisation bounds against the reference, told apart
+     * by the proofs: short of it, beyond it at an exactly verified point
+     * (the reference missed it), or beyond it by a reduction error only.
+     */
+    void
+    comparison(const FuzzyStudyResults &results,
+               const unsigned int       k,
+               std::ostringstream      &out,
+               nlohmann::json          &entry);
+
+    /** The parameters that cannot change the answer, if any. */
+    std::string
+    inert(const FuzzyStudyResults &results, nlohmann::json &json);
 
     /**
      * Queues the membership functions of every output (membership.png,

@@ -126,6 +126,25 @@ namespace FuzzyContact
     const std::string &
     skipped() const;
 
+    /**
+     * For each fuzzy parameter, why it cannot change the answer, or empty
+     * if it can. A density cannot: the contact problem is static (K u = f,
+     * no mass). Both models evaluate such a parameter at its nominal value,
+     * so the outputs do not depend on it even through the reduced basis
+     * (a re-analysed zone density would otherwise move the reduced answer
+     * by its reduction error).
+     */
+    const std::vector<std::string> &
+    inert() const;
+
+    /**
+     * The fuzzy numbers to propagate: those of the parameters, the inert
+     * ones made crisp (at the midpoint of their core), so that no interval
+     * method varies them and the outputs are crisp in them.
+     */
+    std::vector<FuzzyNumber>
+    effective_numbers() const;
+
   private:
     // The modes of every component, or empty bases when the study does not
     // need them (says why in skipped_stages).
@@ -153,6 +172,7 @@ namespace FuzzyContact
     std::unique_ptr<ReducedOrderModel> reduced_model;
     std::unique_ptr<FullOrderModel>    full_model;
     std::string                        skipped_stages;
+    std::vector<std::string>           inert_parameters;
     unsigned int                       n_ranks_building = 1;
   };
 } // namespace FuzzyContact

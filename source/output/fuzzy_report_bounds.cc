@@ -1,0 +1,248 @@
+// The parts of the fuzzy study's report about the bounds themselves
+// (fuzzy_report.h): the proof of every bound (the exact value at its
+// argument), its shape (vertex, boundary or interior, kinks) and
+// convergence, and the comparison with the reference told apart by the
+// proofs.
+
+#include <fuzzycontact/output/fuzzy_report.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+
+namespace FuzzyContact
+{
+  namespace
+  {
+    std::string
+    sci(const double x, const int digits = 1)
+    {
+      std::ostringstream s;
+      s << std::scientific << std::setprecision(digits) << x;
+      return s.str();
+    }
+
+    // "vertex", "boundary (P1.E)", "interior, kink in P1.tip.force".
+    std::string
+    shape(const BoundQuality &q, const std::vector<FuzzyParameter> &p)
+    {
+      std::string text = q.where;
+      if (!q.kinks.empty())
+        {
+          text += ", kink in";
+          for (const unsigned int i : q.kinks)
+            text += " " + p[i].quantity.name;
+        }
+      return text;
+    }
+
+    // The convergence measure of a bound: the pattern search's last change
+    // where it ran, else the projected gradient.
+    double
+    convergence(const BoundQuality &q)
+    {
+      return q.refined ? q.last_change : q.projected_gradient;
+    }
+
+    nlohmann::json
+    to_json(const BoundQuality &q, const std::vector<FuzzyParameter> &p)
+    {
+      nlohmann::json j;
+      j["where"] = q.where;
+      for (const char *key : {"interior", "kinks"})
+        {
+          j[key] = nlohmann::json::array();
+          for (const unsigned int i :
+               std::string(key) == "kinks" ? q.kinks : q.interior)
+            j[key].push_back(p[i].quantity.name);
+        }
+      j["projected_gradient"] = q.projected_gradient;
+      j["refined"]            = q.refined;
+      j["last_change"]        = q.last_change;
+      j["final_step"]         = q.final_step;
+      j["iteration_limit"]    = q.iteration_limit;
+      return j;
+    }
+
+    // The output's range: over every level and both methods.
+    double
+    range_of(const FuzzyStudyResults &r, const unsigned int k)
+    {
+      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+      for (const FuzzyOutputBounds *b : {&r.optimisation, &r.reference})
+        if (b->bounds.size() > k)
+          for (const Interval &i : b->bounds[k])
+            {
+              lo = std::min(lo, i.lower);
+              hi = std::max(hi, i.upper);
+            }
+      return hi > lo ? hi - lo : 0.;
+    }
+  } // namespace
+
+
+  namespace FuzzyStudyReport
+  {
+    void
+    proofs(const FuzzyStudyResults &r,
+           const unsigned int       k,
+           std::ostringstream      &out,
+           nlohmann::json          &entry)
+    {
+      const bool proved = r.has_proofs;
+      out << "  the bounds' " << (proved ? "proofs and " : "") << "shapes ("
+          << (proved ? "reduced - exact: the exact full-order "
+                       "solver at the bound's argument; "
+                     : "")
+          << "conv.: change of the bound over its last refinements, or "
+             "its projected gradient, relative to the output's range)\n"
+          << "  alpha   " << (proved ? "lower: red.-exact " : "lower: ")
+          << std::left << std::setw(34) << "shape" << std::setw(10) << "conv."
+          << (proved ? "upper: red.-exact " : "upper: ") << std::setw(34)
+          << "shape"
+          << "conv.\n"
+          << std::right;
+      nlohmann::json shapes, proof;
+      for (unsigned int l = 0; l < r.alpha.size(); ++l)
+        {
+          out << "  " << std::fixed << std::setprecision(2) << r.alpha[l]
+              << "   ";
+          for (const bool upper : {false, true})
+            {
+              const BoundQuality &q    = upper
+                                           ? r.optimisation.upper_quality[k][l]
+                                           : r.optimisation.lower_quality[k][l];
+              const std::string   side = upper ? "upper" : "lower";
+              if (proved)
+                {
+                  const BoundProof &p =
+                    upper ? r.proofs.upper[k][l] : r.proofs.lower[k][l];
+                  out << std::setw(10) << sci(p.difference()) << "        ";
+                  proof[side + "_reduced"].push_back(p.reduced);
+                  proof[side + "_exact"].push_back(p.exact);
+                  proof[side + "_difference"].push_back(p.difference());
+                }
+              else
+                out << "       ";
+              out << std::left << std::setw(34) << shape(q, r.parameters)
+                  << std::setw(10) << sci(convergence(q)) << std::right;
+              shapes[side].push_back(to_json(q, r.parameters));
+            }
+          out << "\n";
+        }
+      entry["shape"] = shapes;
+      if (proved)
+        {
+          // The largest reduction error at a bound, relative to the range.
+          double largest = 0;
+          for (const auto *side : {&r.proofs.lower[k], &r.proofs.upper[k]})
+            for (const BoundProof &p : *side)
+              largest = std::max(largest, std::abs(p.difference()));
+          const double range = range_of(r, k);
+          proof["max_abs_difference_over_range"] =
+            range > 0 ? largest / range : largest;
+          entry["proof"] = proof;
+          out << "  largest |reduced - exact| at a bound: " << sci(largest, 2)
+              << (range > 0 ? " (" + sci(largest / range, 2) + " of the range)"
+                            : std::string())
+              << "\n";
+        }
+
+      // Kinks and interior optima, per side.
+      for (const bool upper : {false, true})
+        {
+          unsigned int n_interior = 0, n_kinks = 0;
+          for (unsigned int l = 0; l < r.alpha.size(); ++l)
+            {
+              const BoundQuality &q = upper
+                                        ? r.optimisation.upper_quality[k][l]
+                                        : r.optimisation.lower_quality[k][l];
+              n_interior += !q.interior.empty();
+              n_kinks += !q.kinks.empty();
+            }
+          if (n_interior > 0)
+            out << "  " << (upper ? "upper" : "lower") << " bound: inside the "
+                << "box at " << n_interior << " level(s)"
+                << (n_kinks > 0 ? ", at a kink of the response at " +
+                                    std::to_string(n_kinks) + " level(s)"
+                                : std::string(", no kink"))
+                << "\n";
+        }
+    }
+
+
+    void
+    comparison(const FuzzyStudyResults &r,
+               const unsigned int       k,
+               std::ostringstream      &out,
+               nlohmann::json          &entry)
+    {
+      if (!r.has_reference || !r.has_proofs)
+        return;
+      const double range    = range_of(r, k);
+      double       short_of = 0, missed = 0, unverified = 0;
+      unsigned int n_missed = 0, n_unverified = 0;
+      for (unsigned int l = 0; l < r.alpha.size(); ++l)
+        for (const bool upper : {false, true})
+          {
+            const BoundProof &p =
+              upper ? r.proofs.upper[k][l] : r.proofs.lower[k][l];
+            const Interval &ref = r.reference.bounds[k][l];
+            const auto      c   = compare_with_reference(p.reduced,
+                                                  p.exact,
+                                                  upper ? ref.upper : ref.lower,
+                                                  upper,
+                                                  range);
+            short_of            = std::max(short_of, c.short_of_reference);
+            missed              = std::max(missed, c.reference_missed);
+            unverified          = std::max(unverified, c.outside_not_verified);
+            n_missed += c.reference_missed > 0;
+            n_unverified += c.outside_not_verified > 0;
+          }
+      out << "  against the Extension Principle, relative to the output's "
+             "range ("
+          << sci(range, 3) << "): the optimisation is short of it by at most "
+          << sci(short_of) << "\n";
+      if (n_missed > 0)
+        out << "  " << n_missed << " bound(s) lie beyond the Extension "
+            << "Principle's interval and the exact solver confirms them at "
+               "their arguments: the reference missed them, by up to "
+            << sci(missed)
+            << " (a sampled reference can only under-estimate an "
+               "interval)\n";
+      if (n_unverified > 0)
+        out << "  " << n_unverified << " bound(s) lie beyond the Extension "
+            << "Principle's interval only by the reduction error (the exact "
+               "value at the argument does not), by up to "
+            << sci(unverified) << "\n";
+      entry["reference_comparison"] = {{"range", range},
+                                       {"short_of_reference", short_of},
+                                       {"reference_missed", missed},
+                                       {"n_reference_missed", n_missed},
+                                       {"outside_not_verified", unverified},
+                                       {"n_outside_not_verified",
+                                        n_unverified}};
+    }
+
+
+    std::string
+    inert(const FuzzyStudyResults &r, nlohmann::json &json)
+    {
+      std::ostringstream out;
+      json["inert_parameters"] = nlohmann::json::array();
+      for (unsigned int i = 0; i < r.inert.size(); ++i)
+        if (!r.inert[i].empty())
+          {
+            out << "  " << r.parameters[i].quantity.name
+                << " cannot change the answer (" << r.inert[i]
+                << "): it is held at its nominal value, and the outputs are "
+                   "crisp in it\n";
+            json["inert_parameters"].push_back(
+              {{"name", r.parameters[i].quantity.name},
+               {"reason", r.inert[i]}});
+          }
+      return out.str();
+    }
+  } // namespace FuzzyStudyReport
+} // namespace FuzzyContact
