@@ -567,14 +567,14 @@ namespace FuzzyContact
         ContactState          solved;
         try
           {
-            solved = exact.solve(restricted, local, local_mu, what);
+            solved = warm.solve(restricted, local, local_mu, what);
           }
         catch (const ExceptionBase &)
           {
             local.previous.status.assign(s, ContactStatus::open);
             try
               {
-                solved = exact.solve(restricted, local, local_mu, what);
+                solved = cold.solve(restricted, local, local_mu, what);
               }
             catch (const ExceptionBase &)
               {
@@ -613,7 +613,12 @@ namespace FuzzyContact
       Regulators                                regulators;
       ContactState                              state;
       double                                    free_force = 0;
-      const ActiveSetSolver                     exact{
+      // The exact solver of the coarse correction: from the regulators'
+      // statuses, a few iterations (a poor start may cycle into Murty's
+      // one-node-per-iteration rule); else from its own frictionless start.
+      const ActiveSetSolver warm{
+        ActiveSetParameters{std::min(1e-10, parameters.tolerance), 2}};
+      const ActiveSetSolver cold{
         ActiveSetParameters{std::min(1e-10, parameters.tolerance), 200}};
     };
   } // namespace
