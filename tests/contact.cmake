@@ -59,8 +59,9 @@ set(step3_bad_inputs
 fuzzycontact_bad_input_tests(step-3 overlap "${step3_bad_inputs}"
   -DEXTRA_FILES=${CMAKE_SOURCE_DIR}/prm/stacked.prm)
 
-# FL2C with the paper's transition points oscillates on this scene: it must
-# say so and stop, not answer.
+# FL2C with the paper's transition points and without its coarse correction
+# (the paper's regulators alone) oscillates on this scene: it must say so
+# and stop, not answer.
 fuzzycontact_program_test(step-3.bad_input.regulator_does_not_converge
   step-3 overlap
   -DEXPECT=failure
@@ -69,4 +70,7 @@ fuzzycontact_program_test(step-3.bad_input.regulator_does_not_converge
   -DEDIT_FILE=step
   "-DEDIT_FROM=set calibration     = automatic"
   "-DEDIT_TO=set calibration = prm"
+  -DEDIT2_FILE=step
+  "-DEDIT2_FROM=set coarse correction = active set"
+  "-DEDIT2_TO=set coarse correction = none"
   "-DMESSAGE=fl2c_modes: the fuzzy regulators did not converge in 20000 iterations \\(load step 1\\); complementarity residual")

@@ -365,6 +365,81 @@ TEST(FuzzyParameters, ASubsectionAloneDeclaresAParameter)
 }
 
 
+// A fuzzy study's parameters against its scene and contact solver, before
+// anything is computed (InputChecks::check, called by step-4 after reading
+// its file): a fuzzy gap whose support goes below zero is an initial
+// penetration, refused like a negative gap of the scene, naming the key
+// (within the interface's round-off, 1e-8 of the 0.2 m master face, it
+// passes as the scene's does); a friction support below zero is refused
+// where the support is read, naming the key; FL2C's absolute transition
+// points without the coarse correction are refused for parameters that
+// change W or the gaps, and accepted otherwise.
+TEST(InputChecks, FuzzyGapFrictionAndFL2CCalibrationRefusedUpFront)
+{
+  const Scene scene = Scene::read(source_dir + "/prm/overlap.prm");
+  const auto  fuzzy = [&](const std::string &name, const std::string &values) {
+    return fuzzy_parameters(scene,
+                            "set fuzzy parameters = " + name +
+                              "\nsubsection Fuzzy parameter " + name +
+                              "\nset values = " + values + "\nend\n");
+  };
+  const FL2CParameters fl2c;
+  const auto           check = [&](const FuzzyParameterSet &set,
+                         const FL2CParameters    &parameters,
+                         const std::string       &solver = "fl2c") {
+    return error_of([&]() {
+      InputChecks::check(set, scene, solver, parameters);
+    });
+  };
+
+  const std::string gap = check(fuzzy("interface.gap", "-1e-4, 0, 1e-4"), fl2c);
+  EXPECT_NE(gap.find("Fuzzy parameter interface.gap: initial penetration of "
+                     "0.0001 m at the lower end of its support (the gap of "
+                     "contact pair interface would be -0.0001 m); at most "
+                     "2e-09 m is accepted as round-off."),
+            std::string::npos)
+    << gap;
+  EXPECT_EQ(check(fuzzy("interface.gap", "-1e-10, 0, 1e-4"), fl2c), "");
+  EXPECT_EQ(check(fuzzy("interface.gap", "0, 1e-5, 1e-4"), fl2c), "");
+
+  const std::string mu = error_of([&]() {
+    fuzzy("interface.mu", "-0.1, 0.3, 0.5");
+  });
+  EXPECT_NE(mu.find("Fuzzy parameter interface.mu: the ends of its support"),
+            std::string::npos)
+    << mu;
+  EXPECT_NE(mu.find("must lie between 0 and 10"), std::string::npos) << mu;
+
+  FL2CParameters paper;
+  paper.calibration       = FL2CParameters::Calibration::prm;
+  paper.coarse_correction = FL2CParameters::CoarseCorrection::none;
+  for (const auto &[name, values] :
+       {std::make_pair("P1.E", "2e11, 2.1e11, 2.2e11"),
+        std::make_pair("P1.tip.force", "1e4, 5e4, 1e5"),
+        std::make_pair("interface.gap", "0, 1e-5, 1e-4")})
+    {
+      const std::string message = check(fuzzy(name, values), paper);
+      EXPECT_NE(message.find(std::string("FL2C: calibration = prm with coarse "
+                                         "correction = none and the fuzzy "
+                                         "parameter ") +
+                             name),
+                std::string::npos)
+        << message;
+      // Automatic calibration, the coarse correction or the exact solver:
+      // accepted.
+      FL2CParameters corrected = paper;
+      corrected.coarse_correction =
+        FL2CParameters::CoarseCorrection::active_set;
+      FL2CParameters automatic = paper;
+      automatic.calibration    = FL2CParameters::Calibration::automatic;
+      EXPECT_EQ(check(fuzzy(name, values), corrected), "") << name;
+      EXPECT_EQ(check(fuzzy(name, values), automatic), "") << name;
+      EXPECT_EQ(check(fuzzy(name, values), paper, "reduced exact"), "") << name;
+    }
+  EXPECT_EQ(check(fuzzy("interface.mu", "0, 0.3, 0.5"), paper), "");
+}
+
+
 TEST(ParameterFile, ThePathMustBeAReadableFile)
 {
   const fs::path folder = fs::temp_directory_path() / "fuzzycontact-prm-dir";

@@ -9,6 +9,7 @@
 #include <fuzzycontact/contact/fl2c.h>
 #include <fuzzycontact/contact/full_order_contact.h>
 #include <fuzzycontact/fuzzy/fuzzy_parameters.h>
+#include <fuzzycontact/fuzzy/vertex_method.h>
 #include <fuzzycontact/scene/scene.h>
 #include <fuzzycontact/scene/scene_quantity.h>
 #include <fuzzycontact/scene/scene_state.h>
@@ -310,6 +311,70 @@ TEST(TwoPairs, FuzzyStudyReferenceKeepsEachPairsFriction)
       EXPECT_GT(std::abs(f[3]), 0.1 * f[2]);
     }
 }
+
+// step-4's key `contact solver` (FuzzyContactModelSettings): the reduced
+// model solved by FL2C (the default) or by the exact reduced solver, said
+// in the model's description. On `stacked` (distributed contact) with a
+// fuzzy friction coefficient from 0 to 0.6 and a fuzzy load, both give the
+// same bounds (vertex method, 3 levels) within 1e-6 of each output's
+// largest magnitude: FL2C converges to the exact reduced solution.
+TEST(FuzzyContactModel, ContactSolverChoiceGivesTheSameBounds)
+{
+  const Scene             s   = scene("stacked");
+  const FuzzyParameterSet set = fuzzy_parameters(
+    s,
+    "set fuzzy parameters = interface.mu, P1.tip.force\n"
+    "subsection Fuzzy parameter interface.mu\nset values = 0, 0.3, 0.6\nend\n"
+    "subsection Fuzzy parameter P1.tip.force\n"
+    "set values = 10e3, 50e3, 100e3\nend\n");
+  const std::vector<std::string> outputs = {"slave.ux", "slave.uy", "Fn", "Ft"};
+  std::vector<FuzzyOutputBounds> bounds;
+  for (const std::string solver : {"fl2c", "reduced exact"})
+    {
+      ParameterHandler prm;
+      FuzzyContactModelSettings::declare_parameters(prm);
+      prm.parse_input_from_string("set mesh refinements = 0\n"
+                                  "set contact solver = " +
+                                  solver + "\n");
+      FuzzyContactModelSettings settings;
+      settings.parse_parameters(prm);
+      EXPECT_EQ(settings.contact_solver, solver);
+      FuzzyContactModel model(s, set, outputs, settings);
+      EXPECT_EQ(model.contact_solver(), solver);
+      EXPECT_NE(model.describe().find(solver == "fl2c"
+                                        ? "solved by FL2C (fuzzy regulators"
+                                        : "solved by the exact reduced solver "
+                                          "(reduced exact"),
+                std::string::npos)
+        << model.describe();
+      bounds.push_back(VertexMethod().bounds(
+        set.numbers(),
+        alpha_levels(3),
+        [&](const std::vector<double> &p) {
+          return model.reduced(p);
+        },
+        outputs,
+        MPI_COMM_SELF));
+    }
+  for (unsigned int k = 0; k < outputs.size(); ++k)
+    {
+      double scale = 0;
+      for (const Interval &i : bounds[1].bounds[k])
+        scale = std::max({scale, std::abs(i.lower), std::abs(i.upper)});
+      EXPECT_GT(scale, 0) << outputs[k];
+      EXPECT_LE(max_relative_difference(bounds[0].bounds[k],
+                                        bounds[1].bounds[k],
+                                        scale),
+                1e-6)
+        << outputs[k];
+    }
+  // An unknown solver name is refused by the key's pattern.
+  ParameterHandler prm;
+  FuzzyContactModelSettings::declare_parameters(prm);
+  EXPECT_ANY_THROW(
+    prm.parse_input_from_string("set contact solver = newton\n"));
+}
+
 
 // A reduced model built without the reanalysis of a component cannot
 // represent a change of one of its zones, and says so.

@@ -167,6 +167,34 @@ namespace FuzzyContact
   }
 
 
+  double
+  complementarity_residual(const unsigned int    k,
+                           const Vector<double> &p,
+                           const Vector<double> &g,
+                           const Vector<double> &g_previous,
+                           const double          mu,
+                           const std::function<double(unsigned int)> &c_n,
+                           const std::function<double(unsigned int)> &c_t)
+  {
+    const double pn = p[normal_row(k)], pt = p[tangential_row(k)];
+    const double gn = g[normal_row(k)];
+    // An open node with a non-negative gap and no force satisfies both
+    // conditions whatever the scaling.
+    if (pn == 0 && pt == 0 && gn >= 0)
+      return 0;
+    const double a   = std::max(0., pn - c_n(k) * gn);
+    const double phi = pn - a;
+    double       psi = pt;
+    if (mu > 0 && a > 0)
+      {
+        const double dgt = g[tangential_row(k)] - g_previous[tangential_row(k)];
+        const double z   = pt - c_t(k) * dgt;
+        psi              = pt - std::clamp(z, -mu * a, mu * a);
+      }
+    return std::abs(phi) + std::abs(psi);
+  }
+
+
   std::vector<double>
   complementarity_residuals(const Vector<double>      &p,
                             const Vector<double>      &g,
@@ -181,25 +209,7 @@ namespace FuzzyContact
     AssertDimension(g_previous.size(), 2 * n);
     std::vector<double> r(n, 0.);
     for (unsigned int k = 0; k < n; ++k)
-      {
-        const double pn = p[normal_row(k)], pt = p[tangential_row(k)];
-        const double gn = g[normal_row(k)];
-        // An open node with a non-negative gap and no force satisfies both
-        // conditions whatever the scaling.
-        if (pn == 0 && pt == 0 && gn >= 0)
-          continue;
-        const double a   = std::max(0., pn - c_n(k) * gn);
-        const double phi = pn - a;
-        double       psi = pt;
-        if (mu[k] > 0 && a > 0)
-          {
-            const double dgt =
-              g[tangential_row(k)] - g_previous[tangential_row(k)];
-            const double z = pt - c_t(k) * dgt;
-            psi            = pt - std::clamp(z, -mu[k] * a, mu[k] * a);
-          }
-        r[k] = std::abs(phi) + std::abs(psi);
-      }
+      r[k] = complementarity_residual(k, p, g, g_previous, mu[k], c_n, c_t);
     return r;
   }
 

@@ -1,4 +1,5 @@
 #include <fuzzycontact/base/input.h>
+#include <fuzzycontact/contact/active_set_solver.h>
 #include <fuzzycontact/contact/fl2c.h>
 
 #include <deal.II/base/exceptions.h>
@@ -36,12 +37,20 @@ namespace FuzzyContact
                       "500, 5000, 15000",
                       Patterns::Anything(),
                       "Tangential regulator output b1 < b2 < b3 [N] (prm).");
+    prm.declare_entry("coarse correction",
+                      "active set",
+                      Patterns::Selection("active set|none"),
+                      "After each sweep of the regulators: the exact "
+                      "reduced solver on the nodes the regulators work on, "
+                      "warm-started from their statuses (active set: "
+                      "converges on distributed contact in a few sweeps), "
+                      "or nothing (none: the paper's regulators alone).");
     prm.declare_entry("tolerance",
                       "1e-4",
                       Patterns::Double(),
-                      "Relative tolerance on the gaps (times the largest "
-                      "free penetration) and on the force change (times "
-                      "the total normal force).");
+                      "Relative complementarity residual (Signorini and "
+                      "Coulomb conditions, as the exact solver measures "
+                      "it) at which the sweeps stop.");
     prm.declare_entry("max iterations",
                       "20000",
                       Patterns::Integer(),
@@ -62,10 +71,13 @@ namespace FuzzyContact
         Input::to_doubles(prm.get(key), "FL2C: " + key, 3);
       return std::array<double, 3>{{v[0], v[1], v[2]}};
     };
-    gap_points      = points("gap points");
-    force_points    = points("force points");
-    slip_points     = points("slip points");
-    friction_points = points("friction points");
+    coarse_correction = prm.get("coarse correction") == "none"
+                          ? CoarseCorrection::none
+                          : CoarseCorrection::active_set;
+    gap_points        = points("gap points");
+    force_points      = points("force points");
+    slip_points       = points("slip points");
+    friction_points   = points("friction points");
     tolerance = Input::positive(prm.get_double("tolerance"), "FL2C: tolerance");
     const long n = prm.get_integer("max iterations");
     AssertThrow(n >= 1,
@@ -127,6 +139,13 @@ namespace FuzzyContact
   }
 
 
+  void
+  FL2CSolver::set_monitor(std::function<void(unsigned int, double)> m)
+  {
+    monitor = std::move(m);
+  }
+
+
   namespace
   {
     // The regulators of one load step: the calibrated shape, scaled per
@@ -157,159 +176,451 @@ namespace FuzzyContact
       }
     };
 
-    // The scale of the gap tolerance: the largest free penetration, or, if
-    // nothing penetrates without contact forces, the largest free gap (and
-    // the forces of a previous step are released).
-    double
-    gap_scale(const LoadStep &step, const unsigned int n)
+
+    // W restricted to some of its rows (two per node of FL2C's working
+    // set), the problem of the coarse correction.
+    class RestrictedFlexibility : public FlexibilityOperator
     {
-      double g_scale = 0;
-      for (unsigned int k = 0; k < n; ++k)
-        g_scale = std::max(g_scale, -step.g_free[normal_row(k)]);
-      if (g_scale == 0)
-        for (unsigned int k = 0; k < n; ++k)
-          g_scale = std::max(g_scale, std::abs(step.g_free[normal_row(k)]));
-      return g_scale;
+    public:
+      RestrictedFlexibility(FlexibilityOperator             &W,
+                            const std::vector<unsigned int> &rows)
+          : W(W)
+          , rows(rows)
+      {
+      }
+
+      unsigned int
+      size() const override
+      {
+        return rows.size();
+      }
+
+      void
+      prepare(const std::vector<unsigned int> &columns) override
+      {
+        global.clear();
+        for (const unsigned int j : columns)
+          global.push_back(rows[j]);
+        W.prepare(global);
+      }
+
+      double
+      operator()(const unsigned int i, const unsigned int j) const override
+      {
+        return W(rows[i], rows[j]);
+      }
+
+      const double *
+      column(const unsigned int j) override
+      {
+        const double *w = W.column(rows[j]);
+        gathered.resize(rows.size());
+        for (unsigned int i = 0; i < rows.size(); ++i)
+          gathered[i] = w[rows[i]];
+        return gathered.data();
+      }
+
+      double
+      diagonal(const unsigned int i) override
+      {
+        return W.diagonal(rows[i]);
+      }
+
+    private:
+      FlexibilityOperator             &W;
+      const std::vector<unsigned int> &rows;
+      std::vector<unsigned int>        global;
+      std::vector<double>              gathered;
+    };
+
+
+    // The status a force implies: open where p_n = 0, slip where |p_t| =
+    // mu p_n (or mu = 0), stick elsewhere.
+    std::pair<ContactStatus, int>
+    status_of(const double pn, const double pt, const double mu)
+    {
+      if (pn <= 0)
+        return {ContactStatus::open, 0};
+      if (mu > 0 && std::abs(pt) < mu * pn)
+        return {ContactStatus::stick, 0};
+      return {ContactStatus::slip, pt >= 0 ? 1 : -1};
     }
 
-    // 1. Reduced solve: the gaps g = g_free + W p of the current forces.
-    void
-    compute_gaps(ContactState         &state,
-                 FlexibilityOperator  &W,
-                 const Vector<double> &g_free)
+
+    // One load step of FL2C (see fl2c.h): the working set, its sweeps and
+    // coarse corrections, and the checks of the whole interface.
+    class LoadStepSweeps
     {
-      state.g = g_free;
-      for (unsigned int j = 0; j < state.p.size(); ++j)
-        if (state.p[j] != 0)
+    public:
+      LoadStepSweeps(const FL2CParameters      &parameters,
+                     const MamdaniRegulator    &shape,
+                     const double               shape_gain,
+                     FlexibilityOperator       &W,
+                     const LoadStep            &step,
+                     const std::vector<double> &mu,
+                     const std::string         &what)
+          : parameters(parameters)
+          , corrected(parameters.coarse_correction ==
+                      FL2CParameters::CoarseCorrection::active_set)
+          , W(W)
+          , step(step)
+          , mu(mu)
+          , what(what)
+          , n(mu.size())
+          , in_working(n, false)
+          , c_n([this](const unsigned int k) {
+            return 1. / this->W.diagonal(normal_row(k));
+          })
+          , c_t([this](const unsigned int k) {
+            return 1. / this->W.diagonal(tangential_row(k));
+          })
+          , regulators{parameters.calibration ==
+                         FL2CParameters::Calibration::automatic,
+                       shape,
+                       shape_gain,
+                       0.,
+                       MamdaniRegulator(parameters.gap_points,
+                                        parameters.force_points),
+                       MamdaniRegulator(parameters.slip_points,
+                                        parameters.friction_points)}
+      {
+        state.p = step.previous.p;
+        if (state.p.size() != 2 * n)
+          state.p.reinit(2 * n);
+        state.status.assign(n, ContactStatus::open);
+        state.slip_sign.assign(n, 0);
+        start();
+      }
+
+      // Sweeps until every node's residual is at most the tolerance;
+      // throws after max_iterations sweeps.
+      ContactState
+      run(const std::function<void(unsigned int, double)> &monitor)
+      {
+        double       residual     = 0;
+        double       force_change = 0;
+        unsigned int last_check   = 0;
+        if (monitor)
+          monitor(0, interface_residual());
+        for (unsigned int it = 1;; ++it)
           {
-            const double *w = W.column(j);
-            for (unsigned int i = 0; i < state.p.size(); ++i)
-              state.g[i] += w[i] * state.p[j];
+            residual = working_residual();
+            if (residual <= parameters.tolerance ||
+                (!corrected && it - last_check >= 16))
+              {
+                residual   = check_interface();
+                last_check = it;
+              }
+            if (residual <= parameters.tolerance)
+              {
+                state.iterations = it;
+                break;
+              }
+            AssertThrow(it < parameters.max_iterations,
+                        ExcMessage(failure(residual, force_change)));
+            force_change = sweep();
+            if (corrected)
+              coarse_correction();
+            if (monitor)
+              monitor(it, interface_residual());
           }
-    }
+        for (unsigned int k = 0; k < n; ++k)
+          {
+            const auto [s, sign] = status_of(state.p[normal_row(k)],
+                                             state.p[tangential_row(k)],
+                                             mu[k]);
+            state.status[k]      = s;
+            state.slip_sign[k]   = s == ContactStatus::slip ? sign : 0;
+          }
+        state.residual = residual;
+        return state;
+      }
 
-    // Whether the gaps satisfy the contact conditions within @p gap_tol.
-    bool
-    gaps_converged(const ContactState        &state,
-                   const LoadStep            &step,
-                   const std::vector<double> &mu,
-                   const double               gap_tol)
-    {
-      bool gaps_ok = true;
-      for (unsigned int k = 0; k < mu.size() && gaps_ok; ++k)
-        {
-          const double pn = state.p[normal_row(k)];
-          const double pt = state.p[tangential_row(k)];
-          const double gn = state.g[normal_row(k)];
-          const double dgt =
-            state.g[tangential_row(k)] - step.g_previous[tangential_row(k)];
-          if (pn > 0)
-            {
-              gaps_ok = std::abs(gn) <= gap_tol;
-              if (mu[k] > 0 && std::abs(pt) < mu[k] * pn)
-                gaps_ok = gaps_ok && std::abs(dgt) <= gap_tol;
-              else if (mu[k] > 0)
-                gaps_ok = gaps_ok && (pt > 0 ? dgt : -dgt) <= gap_tol;
-            }
+    private:
+      // The gaps of the previous step's forces on every row, the scales of
+      // the regulators and of the residual, and the working set: the nodes
+      // that carry a force or penetrate. O(m) per loaded node, once.
+      void
+      start()
+      {
+        state.g = step.g_free;
+        for (unsigned int j = 0; j < 2 * n; ++j)
+          if (state.p[j] != 0)
+            add_column(j, state.p[j], true);
+        // The gap scale: the largest free penetration, or the largest free
+        // gap if nothing penetrates without contact forces.
+        double g_scale = 0, gap = 0;
+        for (unsigned int k = 0; k < n; ++k)
+          {
+            const double g = step.g_free[normal_row(k)];
+            g_scale        = std::max(g_scale, -g);
+            gap            = std::max(gap, std::abs(g));
+            if (g < 0)
+              free_force = std::max(free_force, -c_n(k) * g);
+            if (state.p[normal_row(k)] != 0 || state.g[normal_row(k)] < 0)
+              join(k);
+          }
+        // Without free gaps, from the gaps of the previous forces.
+        if (gap == 0)
+          for (const unsigned int k : working)
+            gap = std::max(gap, std::abs(state.g[normal_row(k)]));
+        regulators.g_ref = (g_scale > 0 ? g_scale : gap) / 3;
+      }
+
+      // Open nodes that do not touch leave the working set (they rejoin at
+      // the next check of the interface if they penetrate).
+      void
+      prune()
+      {
+        std::vector<unsigned int> kept;
+        for (const unsigned int k : working)
+          if (state.p[normal_row(k)] != 0 || state.p[tangential_row(k)] != 0 ||
+              state.g[normal_row(k)] <= 0)
+            kept.push_back(k);
           else
-            gaps_ok = gn >= -gap_tol;
-        }
-      return gaps_ok;
-    }
+            in_working[k] = false;
+        working.swap(kept);
+        rows.clear();
+        for (const unsigned int k : working)
+          {
+            rows.push_back(normal_row(k));
+            rows.push_back(tangential_row(k));
+          }
+      }
 
-    // The complementarity residuals of @p state and their scale, with c_n
-    // and c_t from the diagonal of W.
-    std::pair<std::vector<double>, double>
-    residuals(const ContactState        &state,
-              const LoadStep            &step,
-              FlexibilityOperator       &W,
-              const std::vector<double> &mu)
-    {
-      const auto c_n = [&](unsigned int k) {
-        return 1. / W.diagonal(normal_row(k));
-      };
-      const auto c_t = [&](unsigned int k) {
-        return 1. / W.diagonal(tangential_row(k));
-      };
-      return {complementarity_residuals(state.p,
+      // Node k joins the working set; its gaps are up to date.
+      void
+      join(const unsigned int k)
+      {
+        if (in_working[k])
+          return;
+        in_working[k] = true;
+        working.push_back(k);
+        rows.push_back(normal_row(k));
+        rows.push_back(tangential_row(k));
+      }
+
+      // Adds a W e_j to the gaps: of every row, or of the working set's.
+      void
+      add_column(const unsigned int j, const double a, const bool all)
+      {
+        const double *w = W.column(j);
+        if (all)
+          for (unsigned int i = 0; i < 2 * n; ++i)
+            state.g[i] += w[i] * a;
+        else
+          for (const unsigned int i : rows)
+            state.g[i] += w[i] * a;
+      }
+
+      // The force scale of the relative residual (as residual_scale()):
+      // forces are only carried by the working set.
+      double
+      scale() const
+      {
+        double total = 0;
+        for (const unsigned int k : working)
+          total += std::max(state.p[normal_row(k)], 0.);
+        return total > 0 ? total : free_force;
+      }
+
+      double
+      node_residual(const unsigned int k) const
+      {
+        return complementarity_residual(k,
+                                        state.p,
                                         state.g,
                                         step.g_previous,
-                                        mu,
+                                        mu[k],
                                         c_n,
-                                        c_t),
-              residual_scale(state.p, step.g_free, c_n)};
-    }
+                                        c_t);
+      }
 
-    // 2. One sweep of the regulators, node by node, most penetrating first;
-    // each acts on the gaps left by the force changes before it (the
-    // reduced solve is incremental: a change dp_j moves the gaps by W e_j
-    // dp_j). Returns the largest force change.
-    double
-    sweep(ContactState              &state,
-          const LoadStep            &step,
-          FlexibilityOperator       &W,
-          const std::vector<double> &mu,
-          const Regulators          &regulators)
-    {
-      const unsigned int        n = mu.size();
-      std::vector<unsigned int> order;
-      for (unsigned int k = 0; k < n; ++k)
-        if (state.p[normal_row(k)] > 0 || state.g[normal_row(k)] < 0)
-          order.push_back(k);
-      std::stable_sort(order.begin(),
-                       order.end(),
-                       [&](const unsigned int i, const unsigned int j) {
-                         return state.g[normal_row(i)] < state.g[normal_row(j)];
-                       });
-      double     force_change = 0;
-      const auto apply = [&](const unsigned int row, const double change) {
-        if (change == 0)
-          return;
-        state.p[row] += change;
-        const double *w = W.column(row);
-        for (unsigned int i = 0; i < 2 * n; ++i)
-          state.g[i] += w[i] * change;
-        force_change = std::max(force_change, std::abs(change));
-      };
-      for (const unsigned int k : order)
-        {
-          const unsigned int rn = normal_row(k), rt = tangential_row(k);
-          const double       dpn =
-            regulators.normal_change(state.g[rn], W.diagonal(rn));
-          const double pn = std::max(0., state.p[rn] + dpn);
-          apply(rn, pn - state.p[rn]);
-          if (mu[k] == 0)
-            continue;
-          // Tangential force capped by Coulomb's bound.
-          const double dgt = state.g[rt] - step.g_previous[rt];
-          const double dpt = regulators.tangential_change(dgt, W.diagonal(rt));
-          apply(rt,
-                std::clamp(state.p[rt] + dpt, -mu[k] * pn, mu[k] * pn) -
-                  state.p[rt]);
-        }
-      return force_change;
-    }
+      // The relative residual of the working set, O(s).
+      double
+      working_residual() const
+      {
+        double worst = 0;
+        for (const unsigned int k : working)
+          worst = std::max(worst, node_residual(k));
+        return worst == 0 ? 0. : worst / scale();
+      }
 
-    // 3. Status of the forces: open where p_n = 0, slip where |p_t| = mu
-    // p_n, stick elsewhere.
-    void
-    set_statuses(ContactState &state, const std::vector<double> &mu)
-    {
-      for (unsigned int k = 0; k < mu.size(); ++k)
-        {
-          const double pn = state.p[normal_row(k)],
-                       pt = state.p[tangential_row(k)];
-          if (pn <= 0)
-            state.status[k] = ContactStatus::open;
-          else if (mu[k] > 0 && std::abs(pt) < mu[k] * pn)
-            state.status[k] = ContactStatus::stick;
-          else
-            {
-              state.status[k]    = ContactStatus::slip;
-              state.slip_sign[k] = pt >= 0 ? 1 : -1;
-            }
-        }
-    }
+      // The gaps of every row from the forces of the working set; nodes
+      // that violate the conditions join the working set. Returns the
+      // relative residual of all nodes. O(m) per loaded node.
+      double
+      check_interface()
+      {
+        state.g = step.g_free;
+        for (const unsigned int j : rows)
+          if (state.p[j] != 0)
+            add_column(j, state.p[j], true);
+        prune();
+        double worst = 0;
+        for (unsigned int k = 0; k < n; ++k)
+          {
+            const double r = node_residual(k);
+            worst          = std::max(worst, r);
+            if (r > 0)
+              join(k);
+          }
+        return worst == 0 ? 0. : worst / scale();
+      }
+
+      // The residual of all nodes without changing anything (monitor).
+      double
+      interface_residual()
+      {
+        const Vector<double> kept = state.g;
+        state.g                   = step.g_free;
+        for (const unsigned int j : rows)
+          if (state.p[j] != 0)
+            add_column(j, state.p[j], true);
+        double worst = 0;
+        for (unsigned int k = 0; k < n; ++k)
+          worst = std::max(worst, node_residual(k));
+        const double s = scale();
+        for (const unsigned int i : rows)
+          state.g[i] = kept[i];
+        return worst == 0 ? 0. : worst / s;
+      }
+
+      // 1. One sweep of the regulators over the working set, most
+      // penetrating first; each acts on the gaps left by the force changes
+      // before it. Returns the largest force change.
+      double
+      sweep()
+      {
+        std::vector<unsigned int> order;
+        for (const unsigned int k : working)
+          if (state.p[normal_row(k)] > 0 || state.g[normal_row(k)] < 0)
+            order.push_back(k);
+        std::stable_sort(order.begin(),
+                         order.end(),
+                         [&](const unsigned int i, const unsigned int j) {
+                           return state.g[normal_row(i)] <
+                                  state.g[normal_row(j)];
+                         });
+        double     force_change = 0;
+        const auto apply = [&](const unsigned int row, const double change) {
+          if (change == 0)
+            return;
+          state.p[row] += change;
+          add_column(row, change, false);
+          force_change = std::max(force_change, std::abs(change));
+        };
+        for (const unsigned int k : order)
+          {
+            const unsigned int rn = normal_row(k), rt = tangential_row(k);
+            // Open and no longer penetrating (a force before it lifted it):
+            // the regulators would leave it open, R(g >= 0) <= 0.
+            if (state.p[rn] == 0 && state.p[rt] == 0 && state.g[rn] >= 0)
+              continue;
+            const double pn =
+              std::max(0.,
+                       state.p[rn] +
+                         regulators.normal_change(state.g[rn], W.diagonal(rn)));
+            apply(rn, pn - state.p[rn]);
+            if (mu[k] == 0)
+              continue;
+            // Tangential force capped by Coulomb's bound.
+            const double dgt = state.g[rt] - step.g_previous[rt];
+            const double pt =
+              state.p[rt] + regulators.tangential_change(dgt, W.diagonal(rt));
+            apply(rt, std::clamp(pt, -mu[k] * pn, mu[k] * pn) - state.p[rt]);
+          }
+        return force_change;
+      }
+
+      // 2. The exact reduced solver on the working set, warm-started from
+      // the statuses of the regulators' forces (cold, by its frictionless
+      // start, if that fails).
+      void
+      coarse_correction()
+      {
+        const unsigned int  s = working.size();
+        LoadStep            local;
+        std::vector<double> local_mu(s);
+        local.step        = step.step;
+        local.load_factor = step.load_factor;
+        local.g_free.reinit(2 * s);
+        local.g_previous.reinit(2 * s);
+        local.previous.status.assign(s, ContactStatus::open);
+        local.previous.slip_sign.assign(s, 0);
+        for (unsigned int i = 0; i < 2 * s; ++i)
+          {
+            local.g_free[i]     = step.g_free[rows[i]];
+            local.g_previous[i] = step.g_previous[rows[i]];
+          }
+        for (unsigned int i = 0; i < s; ++i)
+          {
+            const unsigned int k        = working[i];
+            local_mu[i]                 = mu[k];
+            const auto [status, sign]   = status_of(state.p[normal_row(k)],
+                                                  state.p[tangential_row(k)],
+                                                  mu[k]);
+            local.previous.status[i]    = status;
+            local.previous.slip_sign[i] = sign;
+          }
+        RestrictedFlexibility restricted(W, rows);
+        ContactState          solved;
+        try
+          {
+            solved = warm.solve(restricted, local, local_mu, what);
+          }
+        catch (const ExceptionBase &)
+          {
+            local.previous.status.assign(s, ContactStatus::open);
+            try
+              {
+                solved = cold.solve(restricted, local, local_mu, what);
+              }
+            catch (const ExceptionBase &)
+              {
+                return; // the regulators carry on alone
+              }
+          }
+        for (unsigned int i = 0; i < 2 * s; ++i)
+          {
+            state.p[rows[i]] = solved.p[i];
+            state.g[rows[i]] = solved.g[i];
+          }
+        prune();
+      }
+
+      std::string
+      failure(const double residual, const double force_change) const
+      {
+        std::ostringstream message;
+        message << what << ": the fuzzy regulators did not converge in "
+                << parameters.max_iterations << " iterations (load step "
+                << step.step << "); complementarity residual " << residual
+                << ", last force change " << force_change << " N.";
+        return message.str();
+      }
+
+      const FL2CParameters                     &parameters;
+      const bool                                corrected;
+      FlexibilityOperator                      &W;
+      const LoadStep                           &step;
+      const std::vector<double>                &mu;
+      const std::string                        &what;
+      const unsigned int                        n;
+      std::vector<bool>                         in_working;
+      std::vector<unsigned int>                 working, rows;
+      const std::function<double(unsigned int)> c_n, c_t;
+      Regulators                                regulators;
+      ContactState                              state;
+      double                                    free_force = 0;
+      // The exact solver of the coarse correction: from the regulators'
+      // statuses, a few iterations (a poor start may cycle into Murty's
+      // one-node-per-iteration rule); else from its own frictionless start.
+      const ActiveSetSolver warm{
+        ActiveSetParameters{std::min(1e-10, parameters.tolerance), 2}};
+      const ActiveSetSolver cold{
+        ActiveSetParameters{std::min(1e-10, parameters.tolerance), 200}};
+    };
   } // namespace
 
 
@@ -318,64 +629,13 @@ namespace FuzzyContact
                          const LoadStep       &step,
                          const std::string    &what) const
   {
-    const unsigned int         n  = problem.n_nodes();
-    const std::vector<double> &mu = problem.mu;
-    DenseFlexibility           dense(problem.W);
-    FlexibilityOperator       &W =
+    DenseFlexibility     dense(problem.W);
+    FlexibilityOperator &W =
       problem.flexibility != nullptr ? *problem.flexibility : dense;
-
-    // Scales of the stopping tests.
-    const double     g_scale = gap_scale(step, n);
-    const double     gap_tol = parameters_.tolerance * g_scale;
-    const Regulators regulators{
-      parameters_.calibration == FL2CParameters::Calibration::automatic,
-      shape,
-      shape_gain,
-      g_scale / 3,
-      MamdaniRegulator(parameters_.gap_points, parameters_.force_points),
-      MamdaniRegulator(parameters_.slip_points, parameters_.friction_points)};
-
-    ContactState state;
-    state.p = step.previous.p;
-    if (state.p.size() != 2 * n)
-      state.p.reinit(2 * n);
-    state.status.assign(n, ContactStatus::open);
-    state.slip_sign.assign(n, 0);
-
-    double force_change = std::numeric_limits<double>::infinity();
-    for (unsigned int it = 1; it <= parameters_.max_iterations; ++it)
-      {
-        compute_gaps(state, W, step.g_free);
-
-        // Convergence: the gaps, and the force change of the last sweep.
-        double total = 0;
-        for (unsigned int k = 0; k < n; ++k)
-          total += state.p[normal_row(k)];
-        if (gaps_converged(state, step, mu, gap_tol) &&
-            (force_change <= parameters_.tolerance * total || total == 0))
-          {
-            state.iterations = it;
-            break;
-          }
-        if (it == parameters_.max_iterations)
-          {
-            state.iterations      = it;
-            const auto [r, scale] = residuals(state, step, W, mu);
-            std::ostringstream message;
-            message << what << ": the fuzzy regulators did not converge in "
-                    << parameters_.max_iterations << " iterations (load step "
-                    << step.step << "); complementarity residual "
-                    << *std::max_element(r.begin(), r.end()) / scale
-                    << ", last force change " << force_change << " N.";
-            AssertThrow(false, ExcMessage(message.str()));
-          }
-        force_change = sweep(state, step, W, mu, regulators);
-      }
-
-    set_statuses(state, mu);
-    const auto [r, scale] = residuals(state, step, W, mu);
-    const double worst    = *std::max_element(r.begin(), r.end());
-    state.residual        = worst == 0 ? 0. : worst / scale;
-    return state;
+    AssertDimension(W.size(), 2 * problem.n_nodes());
+    AssertDimension(step.g_free.size(), 2 * problem.n_nodes());
+    LoadStepSweeps
+      sweeps(parameters_, shape, shape_gain, W, step, problem.mu, what);
+    return sweeps.run(monitor);
   }
 } // namespace FuzzyContact

@@ -16,7 +16,8 @@
 //
 //  - the response is evaluated on the reduced model (component modes with
 //    static correction, re-analysed for zone parameters, contact forces by
-//    the FL2C fuzzy regulator), built once;
+//    the FL2C fuzzy regulator, or the exact reduced solver with `contact
+//    solver = reduced exact`), built once;
 //  - the bounds come from bound-constrained optimisation (Trilinos ROL)
 //    started from the optimum of the level above, the paper's method;
 //  - every bound's argument is evaluated once more by the exact full-order
@@ -173,6 +174,7 @@ namespace Step4
       ProgressLines::parse_parameters(prm);
       InputChecks::check(model.modal);
       InputChecks::check(model.fl2c);
+      InputChecks::check(model.exact);
       InputChecks::check(optimisation);
 
       scene = Scene::read(scene_file);
@@ -181,6 +183,7 @@ namespace Step4
                   ExcMessage("fuzzy parameters: name at least one fuzzy "
                              "parameter of the scene (a subsection 'Fuzzy "
                              "parameter <name>' with its values)."));
+      InputChecks::check(fuzzy, scene, model.contact_solver, model.fl2c);
       outputs = Observations::split(prm.get("outputs"));
       Observations::check(outputs, scene);
       check_cost_and_warn(scene);
@@ -399,6 +402,7 @@ namespace Step4
   {
     nlohmann::json json;
     FuzzyStudyReport::bounds(results, report, json);
+    json["contact_solver"] = model->contact_solver();
     TimerOutput::Scope scope(timer, "output");
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;

@@ -16,6 +16,14 @@ namespace FuzzyContact
                       Patterns::Integer(0, 6),
                       "Global refinements of every component mesh (2: "
                       "about 20k DoFs per component in the default scenes).");
+    prm.declare_entry("contact solver",
+                      "fl2c",
+                      Patterns::Selection(contact_solver_names()),
+                      "The contact solver of the reduced model: fl2c (the "
+                      "paper's fuzzy regulators, with the coarse correction "
+                      "of subsection FL2C) or reduced exact (the primal-dual "
+                      "active set method of subsection Exact contact "
+                      "solver).");
     prm.enter_subsection("Reduced models");
     prm.declare_entry("static correction",
                       "true",
@@ -45,6 +53,7 @@ namespace FuzzyContact
     ModalParameters::declare_parameters(prm);
     ReanalysisSettings::declare_parameters(prm);
     FL2CParameters::declare_parameters(prm);
+    ActiveSetParameters::declare_parameters(prm);
   }
 
 
@@ -52,6 +61,7 @@ namespace FuzzyContact
   FuzzyContactModelSettings::parse_parameters(ParameterHandler &prm)
   {
     mesh_refinements = prm.get_integer("mesh refinements");
+    contact_solver   = prm.get("contact solver");
     prm.enter_subsection("Reduced models");
     reduced.static_correction = prm.get_bool("static correction");
     reduced.zone_correction =
@@ -66,6 +76,7 @@ namespace FuzzyContact
                            "number of modes; set cutoff frequency = 0."));
     reduced.reanalysis.parse_parameters(prm);
     fl2c.parse_parameters(prm);
+    exact.parse_parameters(prm);
   }
 
 
@@ -111,9 +122,14 @@ namespace FuzzyContact
       comm);
     if (ReducedOrderModel::spreads_components(varying, comm))
       n_ranks_building = Utilities::MPI::n_mpi_processes(comm);
-    reduced_model->set_contact_solver(std::make_unique<FL2CSolver>(
-                                        settings.fl2c),
-                                      "FL2C");
+    std::unique_ptr<ContactSolver> solver =
+      create_contact_solver(settings.contact_solver,
+                            settings.exact,
+                            settings.fl2c);
+    solver_name = solver->name();
+    reduced_model->set_contact_solver(std::move(solver),
+                                      solver_name == "fl2c" ? "FL2C"
+                                                            : solver_name);
     full_model = std::make_unique<FullOrderModel>(*bodies, outputs->dofs());
   }
 
@@ -189,6 +205,13 @@ namespace FuzzyContact
   }
 
 
+  std::string
+  FuzzyContactModel::contact_solver() const
+  {
+    return solver_name;
+  }
+
+
   SceneState
   FuzzyContactModel::state(const std::vector<double> &values) const
   {
@@ -213,10 +236,15 @@ namespace FuzzyContact
   std::vector<double>
   FuzzyContactModel::reduced(const std::vector<double> &values)
   {
-    return at_point(values, "the reduced model (FL2C)", [&]() {
-      reduced_model->set_state(state(values));
-      return outputs->values(reduced_model->solve());
-    });
+    return at_point(values,
+                    "the reduced model (" +
+                      (solver_name == "fl2c" ? std::string("FL2C")
+                                             : solver_name) +
+                      ")",
+                    [&]() {
+                      reduced_model->set_state(state(values));
+                      return outputs->values(reduced_model->solve());
+                    });
   }
 
 
@@ -306,7 +334,10 @@ namespace FuzzyContact
           << n_ranks_building << " MPI ranks (component c on rank c mod "
           << n_ranks_building << "), their reduced blocks exchanged\n";
     out << "  contact: " << bodies->interface().n_nodes() << " slave nodes in "
-        << bodies->interface().n_pairs() << " contact pair(s)\n"
+        << bodies->interface().n_pairs() << " contact pair(s), solved by "
+        << (solver_name == "fl2c" ? "FL2C (fuzzy regulators"
+                                  : "the exact reduced solver (" + solver_name)
+        << ", key 'contact solver')\n"
         << "  outputs:";
     for (unsigned int i = 0; i < outputs->size(); ++i)
       {

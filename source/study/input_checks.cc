@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace FuzzyContact
 {
@@ -143,6 +144,74 @@ namespace FuzzyContact
       check(modal);
       check(exact);
       check(fl2c);
+    }
+
+
+    namespace
+    {
+      // The length of the master face of @p pair.
+      double
+      master_face_length(const Scene &scene, const ContactPairDescription &pair)
+      {
+        const ComponentDescription &master =
+          scene.components[scene.component_index(pair.master_component)];
+        return (pair.master_face == Face::left ||
+                pair.master_face == Face::right)
+                 ? master.height()
+                 : master.length();
+      }
+    } // namespace
+
+
+    void
+    check(const FuzzyParameterSet &fuzzy,
+          const Scene             &scene,
+          const std::string       &contact_solver,
+          const FL2CParameters    &fl2c,
+          const double             penetration_tolerance)
+    {
+      for (const FuzzyParameter &p : fuzzy.parameters())
+        {
+          const std::string key   = "Fuzzy parameter " + p.quantity.name;
+          const double      lower = p.number.points()[0];
+          if (p.quantity.kind == SceneQuantity::Kind::gap)
+            {
+              const ContactPairDescription &pair =
+                scene.contact_pairs[p.quantity.contact_pair];
+              const double tolerance =
+                penetration_tolerance * master_face_length(scene, pair);
+              std::ostringstream message;
+              message << key << ": initial penetration of " << -lower
+                      << " m at the lower end of its support (the gap of "
+                         "contact pair "
+                      << pair.name << " would be " << lower << " m); at most "
+                      << tolerance
+                      << " m is accepted as round-off. Set values whose "
+                         "support starts at a non-negative gap.";
+              AssertThrow(lower >= -tolerance, ExcMessage(message.str()));
+            }
+          const bool moves_w_or_gaps =
+            p.quantity.kind == SceneQuantity::Kind::youngs_modulus ||
+            p.quantity.kind == SceneQuantity::Kind::load ||
+            p.quantity.kind == SceneQuantity::Kind::gap;
+          AssertThrow(
+            !(Utilities::trim(contact_solver) == "fl2c" &&
+              fl2c.calibration == FL2CParameters::Calibration::prm &&
+              fl2c.coarse_correction ==
+                FL2CParameters::CoarseCorrection::none &&
+              moves_w_or_gaps),
+            ExcMessage(
+              "FL2C: calibration = prm with coarse correction = none and the "
+              "fuzzy parameter " +
+              p.quantity.name +
+              ": the absolute transition points cannot be calibrated for "
+              "the whole parameter box (their gain must stay below 2 / W_nn "
+              "of every node for the sweeps to converge, and " +
+              p.quantity.name +
+              " changes the contact flexibility or the penetrations while "
+              "the points stay fixed). Set FL2C: calibration = automatic, "
+              "or coarse correction = active set."));
+        }
     }
 
 

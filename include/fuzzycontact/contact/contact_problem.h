@@ -234,6 +234,20 @@ namespace FuzzyContact
                             const std::function<double(unsigned int)> &c_n,
                             const std::function<double(unsigned int)> &c_t);
 
+  /**
+   * The residual |phi_n| + |phi_t| of node @p k alone (friction coefficient
+   * @p mu), as complementarity_residuals() computes it for every node: a
+   * solver that works on a few nodes tests them without visiting the rest.
+   */
+  double
+  complementarity_residual(const unsigned int    k,
+                           const Vector<double> &p,
+                           const Vector<double> &g,
+                           const Vector<double> &g_previous,
+                           const double          mu,
+                           const std::function<double(unsigned int)> &c_n,
+                           const std::function<double(unsigned int)> &c_t);
+
   /** The force scale of the relative residual (see the top of this file). */
   double
   residual_scale(const Vector<double>                      &p,

@@ -9,7 +9,8 @@
 //
 //  - reduced(): the fast pipeline (ReducedOrderModel: component modes with
 //    static correction, re-analysed by HPTP for zone materials, built once;
-//    the FL2C regulator per evaluation);
+//    the contact solver of the settings per evaluation: FL2C, the paper's
+//    fuzzy regulators, by default, or the exact reduced solver);
 //  - full_order(): the exact reference of the Extension Principle
 //    (FullOrderModel): by default every evaluation is an independent
 //    full-order analysis, as one would run it without this project; with
@@ -23,6 +24,7 @@
 #ifndef fuzzycontact_study_fuzzy_contact_model_h
 #define fuzzycontact_study_fuzzy_contact_model_h
 
+#include <fuzzycontact/contact/active_set_solver.h>
 #include <fuzzycontact/contact/fl2c.h>
 #include <fuzzycontact/fuzzy/fuzzy_parameters.h>
 #include <fuzzycontact/modal/modal_solver.h>
@@ -48,7 +50,13 @@ namespace FuzzyContact
     unsigned int         mesh_refinements = 2;
     ReducedModelSettings reduced;
     ModalParameters      modal;
-    FL2CParameters       fl2c;
+    /**
+     * The reduced model's contact solver: "fl2c" (the paper's, default) or
+     * "reduced exact" (ActiveSetSolver), see create_contact_solver().
+     */
+    std::string         contact_solver = "fl2c";
+    FL2CParameters      fl2c;
+    ActiveSetParameters exact;
     /**
      * Compute modes only when the study needs them (false: always, e.g. to
      * reproduce the paper's modal basis). They are not needed when the
@@ -59,10 +67,9 @@ namespace FuzzyContact
     bool modes_when_needed = true;
 
     /**
-     * Declares "mesh refinements" and the subsections "Reduced models"
-     * (static correction, zone correction, modes), "Modal analysis",
-     * "Reanalysis"
-     * and "FL2C".
+     * Declares "mesh refinements", "contact solver" and the subsections
+     * "Reduced models" (static correction, zone correction, modes), "Modal
+     * analysis", "Reanalysis", "FL2C" and "Exact contact solver".
      */
     static void
     declare_parameters(ParameterHandler &prm);
@@ -88,6 +95,10 @@ namespace FuzzyContact
     /** The outputs, in the order of the values returned. */
     const Observations &
     observations() const;
+
+    /** The name of the reduced model's contact solver, e.g. "fl2c". */
+    std::string
+    contact_solver() const;
 
     /** The fast answer at @p values (one per fuzzy parameter). */
     std::vector<double>
@@ -171,6 +182,7 @@ namespace FuzzyContact
     std::unique_ptr<Observations>      outputs;
     std::unique_ptr<ReducedOrderModel> reduced_model;
     std::unique_ptr<FullOrderModel>    full_model;
+    std::string                        solver_name;
     std::string                        skipped_stages;
     std::vector<std::string>           inert_parameters;
     unsigned int                       n_ranks_building = 1;

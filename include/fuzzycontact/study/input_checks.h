@@ -10,6 +10,7 @@
 #include <fuzzycontact/base/limits.h>
 #include <fuzzycontact/contact/active_set_solver.h>
 #include <fuzzycontact/contact/fl2c.h>
+#include <fuzzycontact/fuzzy/fuzzy_parameters.h>
 #include <fuzzycontact/fuzzy/optimisation_method.h>
 #include <fuzzycontact/modal/modal_solver.h>
 #include <fuzzycontact/scene/scene.h>
@@ -72,6 +73,34 @@ namespace FuzzyContact
     check(const ModalParameters     &modal,
           const ActiveSetParameters &exact,
           const FL2CParameters      &fl2c);
+
+    /**
+     * The fuzzy parameters of a study against its scene and contact
+     * solver, before anything is computed (the ends of every support were
+     * already checked one by one when they were read):
+     *  - a fuzzy gap whose support goes below zero is an initial
+     *    penetration, refused as a negative gap of the scene is (within
+     *    @p penetration_tolerance times the master face's length, the
+     *    round-off the contact interface accepts), naming the key;
+     *  (a friction coefficient whose support leaves [0, 10] is refused,
+     *    naming the key, where the support is read:
+     *    SceneLimits::friction_coefficient through FuzzyParameterSet);
+     *  - FL2C with calibration = prm (absolute transition points) and
+     *    coarse correction = none, the paper's regulators alone, is
+     *    refused when a fuzzy parameter changes the contact flexibility or
+     *    the gaps (a modulus, a load or a gap): the points' gain must stay
+     *    below 2 / W_nn at every point of the box for the sweeps to
+     *    converge, which nothing checks before the model is built, and
+     *    their gap scale is fixed while the penetrations change with the
+     *    parameters. Automatic calibration rescales both at every point;
+     *    the coarse correction converges whatever the points.
+     */
+    void
+    check(const FuzzyParameterSet &fuzzy,
+          const Scene             &scene,
+          const std::string       &contact_solver,
+          const FL2CParameters    &fl2c,
+          const double             penetration_tolerance = 1e-8);
 
     /**
      * Reads the scene files of a contact study with the same settings:
