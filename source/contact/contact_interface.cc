@@ -1,5 +1,6 @@
 #include <fuzzycontact/base/input.h>
 #include <fuzzycontact/contact/contact_interface.h>
+#include <fuzzycontact/contact/face_geometry.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -25,198 +26,66 @@ namespace FuzzyContact
       return t;
     }
 
-    // Values and first and second derivatives at t of the 1D Lagrange
-    // polynomials through the points ts.
-    struct Lagrange
+    // The pair's tangent, from the master faces' mean outward normal; each
+    // face is turned to run along it.
+    Tensor<1, 2>
+    orient_along_pair(std::vector<FaceGeometry> &master_faces)
     {
-      std::vector<double> value, first, second;
-    };
-
-    Lagrange
-    lagrange(const std::vector<double> &ts, const double t)
-    {
-      const unsigned int n = ts.size();
-      Lagrange           l{std::vector<double>(n, 1.),
-                 std::vector<double>(n, 0.),
-                 std::vector<double>(n, 0.)};
-      for (unsigned int k = 0; k < n; ++k)
-        for (unsigned int a = 0; a < n; ++a)
-          {
-            if (a == k)
-              continue;
-            const double da = ts[k] - ts[a];
-            l.value[k] *= (t - ts[a]) / da;
-            double d1 = 1. / da;
-            for (unsigned int b = 0; b < n; ++b)
-              if (b != k && b != a)
-                d1 *= (t - ts[b]) / (ts[k] - ts[b]);
-            l.first[k] += d1;
-            for (unsigned int b = 0; b < n; ++b)
-              {
-                if (b == k || b == a)
-                  continue;
-                double d2 = 1. / (da * (ts[k] - ts[b]));
-                for (unsigned int c = 0; c < n; ++c)
-                  if (c != k && c != a && c != b)
-                    d2 *= (t - ts[c]) / (ts[k] - ts[c]);
-                l.second[k] += d2;
-              }
-          }
-      return l;
+      Tensor<1, 2> mean_normal;
+      for (const FaceGeometry &face : master_faces)
+        mean_normal += face.normal(0.5) * face.nodes.front().position.distance(
+                                            face.nodes.back().position);
+      const Tensor<1, 2> tau = tangent_of(mean_normal / mean_normal.norm());
+      for (FaceGeometry &face : master_faces)
+        if (tau * (face.nodes.back().position - face.nodes.front().position) <
+            0)
+          face.reverse();
+      return tau;
     }
 
-    // The geometry of one boundary face (edge) of a cell: its nodes (DoFs
-    // grouped by support point into (x, y) pairs) sorted along the chord
-    // between its vertices, their local coordinates in [0, 1], and the
-    // sign that turns (x'_y, -x'_x) into the outward normal.
-    struct FaceGeometry
+    // The faces' indices sorted by their start along @p tau.
+    std::vector<unsigned>
+    order_along(const std::vector<FaceGeometry> &faces, const Tensor<1, 2> &tau)
     {
-      std::vector<FaceNode> nodes;
-      std::vector<double>   ts;
-      double                orientation;
-      // True if every node lies on the chord (to round-off): the normal is
-      // then that of the chord, exactly.
-      bool straight;
+      std::vector<unsigned> order(faces.size());
+      for (unsigned int i = 0; i < order.size(); ++i)
+        order[i] = i;
+      std::sort(order.begin(),
+                order.end(),
+                [&](const unsigned a, const unsigned b) {
+                  return tau * faces[a].nodes.front().position <
+                         tau * faces[b].nodes.front().position;
+                });
+      return order;
+    }
 
-      Point<2>
-      point(const double t) const
-      {
-        const Lagrange l = lagrange(ts, t);
-        Point<2>       x;
-        for (unsigned int i = 0; i < nodes.size(); ++i)
-          x += l.value[i] * nodes[i].position;
-        return x;
-      }
-
-      Tensor<1, 2>
-      derivative(const double t, const unsigned int order = 1) const
-      {
-        const Lagrange l = lagrange(ts, t);
-        Tensor<1, 2>   d;
-        for (unsigned int i = 0; i < nodes.size(); ++i)
-          d += (order == 1 ? l.first[i] : l.second[i]) * nodes[i].position;
-        return d;
-      }
-
-      Tensor<1, 2>
-      normal(const double t) const
-      {
-        const Tensor<1, 2> d =
-          straight ? nodes.back().position - nodes.front().position
-                   : derivative(t);
-        Tensor<1, 2> n;
-        n[0] = d[1];
-        n[1] = -d[0];
-        return orientation * n / n.norm();
-      }
-
-      // The same curve run the other way.
-      void
-      reverse()
-      {
-        std::reverse(nodes.begin(), nodes.end());
-        std::reverse(ts.begin(), ts.end());
-        for (double &t : ts)
-          t = 1 - t;
-        orientation = -orientation;
-      }
-
-      // Closest point of the face's curve to @p x: Newton on
-      // (x(t) - x) . x'(t) = 0 from the chord's projection; t may leave
-      // [0, 1] (the point is then beyond the face).
-      double
-      closest_point(const Point<2> &x) const
-      {
-        const Tensor<1, 2> chord =
-          nodes.back().position - nodes.front().position;
-        double t = ((x - nodes.front().position) * chord) / chord.norm_square();
-        for (unsigned int it = 0; it < 30 && nodes.size() > 2; ++it)
-          {
-            const Tensor<1, 2> r  = point(t) - x;
-            const Tensor<1, 2> d1 = derivative(t, 1);
-            const double       f  = r * d1;
-            const double       df = d1.norm_square() + r * derivative(t, 2);
-            if (df <= 0)
-              break;
-            const double step = f / df;
-            t                 = std::clamp(t - step, -1., 2.);
-            if (std::abs(step) < 1e-14)
-              break;
-          }
-        return t;
-      }
-    };
-
-    template <typename CellIterator, typename FaceIterator>
-    FaceGeometry
-    face_geometry(const Component    &component,
-                  const unsigned int  c,
-                  const CellIterator &cell,
-                  const FaceIterator &face)
+    // The closest point to @p x over the faces (in @p order) whose curve
+    // it falls on within round-off of the ends: the face (nullptr if none)
+    // and the local coordinate there; the first face wins a tie.
+    std::pair<const FaceGeometry *, double>
+    closest_point(const std::vector<FaceGeometry> &faces,
+                  const std::vector<unsigned>     &order,
+                  const Point<2>                  &x)
     {
-      std::vector<types::global_dof_index> dofs(
-        component.fe().n_dofs_per_face());
-      face->get_dof_indices(dofs);
-      const auto  &points    = component.support_points();
-      const auto  &direction = component.dof_directions();
-      const double size      = component.description().lower_left.distance(
-        component.description().upper_right);
-      FaceGeometry g;
-      for (const types::global_dof_index dof : dofs)
+      const FaceGeometry *best   = nullptr;
+      double              best_t = 0, best_distance = 0;
+      for (const unsigned int i : order)
         {
-          bool found = false;
-          for (FaceNode &node : g.nodes)
-            if (node.position.distance(points[dof]) < 1e-12 * size)
-              {
-                node.dofs[direction[dof]] = dof;
-                found                     = true;
-              }
-          if (!found)
+          const double t = faces[i].closest_point(x);
+          if (t < -1e-10 || t > 1 + 1e-10)
+            continue;
+          const double distance =
+            faces[i].point(std::clamp(t, 0., 1.)).distance(x);
+          if (best == nullptr || distance < best_distance)
             {
-              FaceNode node{c, points[dof], {{0, 0}}};
-              node.dofs[direction[dof]] = dof;
-              g.nodes.push_back(node);
+              best          = &faces[i];
+              best_t        = std::clamp(t, 0., 1.);
+              best_distance = distance;
             }
         }
-      const Point<2>     v0    = face->vertex(0);
-      const Tensor<1, 2> chord = face->vertex(1) - v0;
-      std::sort(g.nodes.begin(),
-                g.nodes.end(),
-                [&](const FaceNode &a, const FaceNode &b) {
-                  return (a.position - v0) * chord < (b.position - v0) * chord;
-                });
-      const Tensor<1, 2> span =
-        g.nodes.back().position - g.nodes.front().position;
-      g.straight = true;
-      for (const FaceNode &node : g.nodes)
-        {
-          const Tensor<1, 2> r = node.position - g.nodes.front().position;
-          g.ts.push_back((r * span) / span.norm_square());
-          g.straight =
-            g.straight && std::abs(r[0] * span[1] - r[1] * span[0]) <=
-                            1e-12 * span.norm_square();
-        }
-      g.orientation         = 1;
-      const Point<2> middle = g.point(0.5);
-      if (g.normal(0.5) * (middle - cell->center()) < 0)
-        g.orientation = -1;
-      return g;
+      return {best, best_t};
     }
 
-    // Every boundary face with boundary id @p id of component @p c.
-    std::vector<FaceGeometry>
-    faces_of(const Component         &component,
-             const unsigned int       c,
-             const types::boundary_id id)
-    {
-      std::vector<FaceGeometry> faces;
-      for (const auto &cell : component.dof_handler().active_cell_iterators())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              cell->face(f)->boundary_id() == id)
-            faces.push_back(face_geometry(component, c, cell, cell->face(f)));
-      return faces;
-    }
 
     std::string
     point_string(const Point<2> &p)
@@ -334,28 +203,8 @@ namespace FuzzyContact
 
     // The pair's tangent (from the master's mean normal) orders the
     // segments and measures positions along the face for the reports.
-    Tensor<1, 2> mean_normal;
-    for (const FaceGeometry &face : master_faces)
-      mean_normal += face.normal(0.5) * face.nodes.front().position.distance(
-                                          face.nodes.back().position);
-    const Tensor<1, 2> tau = tangent_of(mean_normal / mean_normal.norm());
-    for (FaceGeometry &face : master_faces)
-      if (tau * (face.nodes.back().position - face.nodes.front().position) < 0)
-        face.reverse();
-    std::vector<unsigned int>  order(master_faces.size());
-    std::vector<MasterSegment> segments;
-    for (const FaceGeometry &face : master_faces)
-      segments.push_back(MasterSegment{face.nodes,
-                                       tau * face.nodes.front().position,
-                                       tau * face.nodes.back().position});
-    for (unsigned int i = 0; i < order.size(); ++i)
-      order[i] = i;
-    std::sort(order.begin(),
-              order.end(),
-              [&](const unsigned a, const unsigned b) {
-                return std::min(segments[a].s_begin, segments[a].s_end) <
-                       std::min(segments[b].s_begin, segments[b].s_end);
-              });
+    const Tensor<1, 2>          tau   = orient_along_pair(master_faces);
+    const std::vector<unsigned> order = order_along(master_faces, tau);
 
     const std::map<types::global_dof_index, SlaveNode> slave_nodes =
       slave_nodes_of(slave_faces, slave.fe().degree);
@@ -375,23 +224,8 @@ namespace FuzzyContact
       {
         // The closest point over all master segments whose curve it falls
         // on (within round-off of the ends).
-        const FaceGeometry *best   = nullptr;
-        double              best_t = 0, best_distance = 0;
-        for (const unsigned int i : order)
-          {
-            const FaceGeometry &face = master_faces[i];
-            const double t = face.closest_point(slave_node.node.position);
-            if (t < -1e-10 || t > 1 + 1e-10)
-              continue;
-            const double distance = face.point(std::clamp(t, 0., 1.))
-                                      .distance(slave_node.node.position);
-            if (best == nullptr || distance < best_distance)
-              {
-                best          = &face;
-                best_t        = std::clamp(t, 0., 1.);
-                best_distance = distance;
-              }
-          }
+        const auto [best, best_t] =
+          closest_point(master_faces, order, slave_node.node.position);
         if (best == nullptr)
           continue; // not opposite the master face
         any_opposite                = true;
@@ -462,15 +296,10 @@ namespace FuzzyContact
                            ") where it could move; the faces cannot touch."));
     std::vector<MasterSegment> sorted;
     for (const unsigned int i : order)
-      {
-        MasterSegment segment = segments[i];
-        if (segment.s_begin > segment.s_end)
-          {
-            std::reverse(segment.nodes.begin(), segment.nodes.end());
-            std::swap(segment.s_begin, segment.s_end);
-          }
-        sorted.push_back(segment);
-      }
+      sorted.push_back(
+        MasterSegment{master_faces[i].nodes,
+                      tau * master_faces[i].nodes.front().position,
+                      tau * master_faces[i].nodes.back().position});
     segments_.push_back(std::move(sorted));
   }
 

@@ -409,63 +409,6 @@ namespace FuzzyContact
   }
 
 
-  // Adds -K_fp u_p of one cell (unit modulus, zone z) to the free rows of
-  // each support displacement's load.
-  void
-  Component::add_displacement_loads(
-    const unsigned int                          z,
-    const FullMatrix<double>                   &cell_k,
-    const std::vector<types::global_dof_index> &dofs)
-  {
-    if (displacement_fields_.empty())
-      return;
-    if (displacement_zone_loads_.empty())
-      displacement_zone_loads_.assign(
-        displacement_fields_.size(),
-        std::vector<Vector<double>>(description_.zones.size(),
-                                    Vector<double>(dof_handler_.n_dofs())));
-    for (unsigned int s = 0; s < displacement_fields_.size(); ++s)
-      {
-        const Vector<double> &field = displacement_fields_[s];
-        for (unsigned int j = 0; j < dofs.size(); ++j)
-          if (field[dofs[j]] != 0)
-            for (unsigned int i = 0; i < dofs.size(); ++i)
-              if (!constraints_.is_constrained(dofs[i]))
-                displacement_zone_loads_[s][z][dofs[i]] -=
-                  cell_k(i, j) * field[dofs[j]];
-      }
-  }
-
-
-  // The load of each support displacement at the current zone moduli.
-  void
-  Component::update_displacement_loads()
-  {
-    unsigned int s = 0;
-    load_.reinit(dof_handler_.n_dofs());
-    for (unsigned int l = 0; l < description_.loads.size(); ++l)
-      {
-        if (description_.loads[l].is_displacement)
-          {
-            unit_loads_[l] = 0;
-            for (unsigned int z = 0; z < n_zones(); ++z)
-              unit_loads_[l].add(zone_moduli_[z],
-                                 displacement_zone_loads_[s][z]);
-            ++s;
-          }
-        load_.add(description_.loads[l].total_force, unit_loads_[l]);
-      }
-  }
-
-
-  bool
-  Component::is_prescribed(const types::global_dof_index dof) const
-  {
-    AssertIndexRange(dof, prescribed_.size());
-    return prescribed_[dof];
-  }
-
-
   void
   Component::assemble_directly(SparseMatrix<double> &K,
                                SparseMatrix<double> &M) const
@@ -482,66 +425,6 @@ namespace FuzzyContact
         return AssemblyTarget{&K, zone_moduli_[z], &M, zone_densities_[z]};
       });
     remove_constrained_mass(constraints_, M);
-  }
-
-
-  // Each load is a constant traction F d / (face length * t) on its face;
-  // the unit vector holds the nodal forces for F = 1 N.
-  void
-  Component::assemble_loads()
-  {
-    const QGauss<1>                      face_quadrature(fe_.degree + 1);
-    FEFaceValues<2>                      fe_face_values(*mapping_,
-                                   fe_,
-                                   face_quadrature,
-                                   update_values | update_JxW_values |
-                                     update_normal_vectors);
-    const FEValuesExtractors::Vector     displacement(0);
-    const unsigned int                   n = fe_.n_dofs_per_cell();
-    Vector<double>                       cell_f(n);
-    std::vector<types::global_dof_index> dofs(n);
-
-    unit_loads_.clear();
-    load_.reinit(dof_handler_.n_dofs());
-    for (const EdgeLoad &load : description_.loads)
-      {
-        if (load.is_displacement)
-          {
-            unit_loads_.emplace_back(dof_handler_.n_dofs());
-            continue; // update_displacement_loads() forms it
-          }
-        const types::boundary_id id =
-          description_.boundary_id(load.face,
-                                   "Component " + name() + ", load " +
-                                     load.name);
-        const double   length = boundary_length(id);
-        Vector<double> f(dof_handler_.n_dofs());
-        for (const auto &cell : dof_handler_.active_cell_iterators())
-          for (const auto &face : cell->face_iterators())
-            if (face->at_boundary() && face->boundary_id() == id)
-              {
-                fe_face_values.reinit(cell, face);
-                cell_f = 0;
-                for (const unsigned int q :
-                     fe_face_values.quadrature_point_indices())
-                  {
-                    // Per unit length: F d / L for a total force, -p t n
-                    // for a pressure (per Pa).
-                    const Tensor<1, 2> traction_times_t =
-                      load.is_pressure
-                        ? Tensor<1, 2>(-description_.thickness *
-                                       fe_face_values.normal_vector(q))
-                        : load.direction / length;
-                    for (unsigned int i = 0; i < n; ++i)
-                      cell_f(i) += fe_face_values[displacement].value(i, q) *
-                                   traction_times_t * fe_face_values.JxW(q);
-                  }
-                cell->get_dof_indices(dofs);
-                constraints_.distribute_local_to_global(cell_f, dofs, f);
-              }
-        unit_loads_.push_back(std::move(f));
-      }
-    update_displacement_loads();
   }
 
 
@@ -584,24 +467,6 @@ namespace FuzzyContact
     matrices_current_ = false;
     if (!displacement_fields_.empty())
       update_displacement_loads();
-  }
-
-
-  double
-  Component::boundary_length(const types::boundary_id id) const
-  {
-    const QGauss<1> quadrature(fe_.degree + 1);
-    FEFaceValues<2> values(*mapping_, fe_, quadrature, update_JxW_values);
-    double          length = 0;
-    for (const auto &cell : dof_handler_.active_cell_iterators())
-      for (const auto &face : cell->face_iterators())
-        if (face->at_boundary() && face->boundary_id() == id)
-          {
-            values.reinit(cell, face);
-            for (const unsigned int q : values.quadrature_point_indices())
-              length += values.JxW(q);
-          }
-    return length;
   }
 
 
@@ -755,36 +620,6 @@ namespace FuzzyContact
     return sparsity_pattern_;
   }
 
-  const Vector<double> &
-  Component::load_vector() const
-  {
-    return load_;
-  }
-
-  const Vector<double> &
-  Component::unit_load_vector(const unsigned int l) const
-  {
-    AssertIndexRange(l, unit_loads_.size());
-    return unit_loads_[l];
-  }
-
-
-  double
-  Component::reference_load_force(const unsigned int l) const
-  {
-    AssertIndexRange(l, description_.loads.size());
-    const double declared = description_.loads[l].total_force;
-    return declared != 0 ? declared : 1.;
-  }
-
-
-  Vector<double>
-  Component::reference_load_vector(const unsigned int l) const
-  {
-    Vector<double> f = unit_load_vector(l);
-    f *= reference_load_force(l);
-    return f;
-  }
 
   const std::vector<Point<2>> &
   Component::support_points() const

@@ -226,6 +226,8 @@ namespace FuzzyContact
             if (face->at_boundary())
               {
                 ++info.boundary_faces[face->boundary_id()];
+                info.boundary_lengths[face->boundary_id()] +=
+                  face->vertex(0).distance(face->vertex(1));
                 for (const unsigned int v : face->vertex_indices())
                   vertices[face->boundary_id()].insert(face->vertex_index(v));
               }

@@ -1,7 +1,9 @@
+#include <fuzzycontact/base/input.h>
 #include <fuzzycontact/base/limits.h>
 #include <fuzzycontact/scene/scene_limits.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
 
 #include <algorithm>
 #include <cmath>
@@ -43,6 +45,20 @@ namespace FuzzyContact
                              max_force,
                              what,
                              "a force in N");
+    }
+
+
+    std::optional<double>
+    optional_force(const std::string &text,
+                   const std::string &keyword,
+                   const std::string &what)
+    {
+      const std::string value = Utilities::trim(text);
+      if (value == keyword)
+        return std::nullopt;
+      return force(
+        Input::to_double(value, what + " (a force in N, or " + keyword + ")"),
+        what);
     }
 
 

@@ -1,5 +1,7 @@
 #include <fuzzycontact/scene/scene_state.h>
 
+#include <deal.II/base/exceptions.h>
+
 #include <cmath>
 
 namespace FuzzyContact
@@ -45,6 +47,41 @@ namespace FuzzyContact
     for (std::vector<double> &forces : load_forces)
       for (double &f : forces)
         f *= factor;
+  }
+
+
+  double
+  SceneState::total_force(const Scene &scene) const
+  {
+    double total = 0;
+    for (unsigned int c = 0; c < scene.components.size(); ++c)
+      for (unsigned int l = 0; l < scene.components[c].loads.size(); ++l)
+        if (!scene.components[c].loads[l].is_displacement)
+          total += std::abs(load_forces[c][l]);
+    return total;
+  }
+
+
+  void
+  SceneState::scale_forces_to(const Scene       &scene,
+                              const double       load,
+                              const std::string &key)
+  {
+    for (const ComponentDescription &c : scene.components)
+      for (const EdgeLoad &l : c.loads)
+        AssertThrow(!l.is_displacement,
+                    ExcMessage(key + " = " + std::to_string(load) + ": scene " +
+                               scene.name +
+                               " prescribes a displacement (component " +
+                               c.name + ", support " + l.name +
+                               "), which a force cannot scale; set " + key +
+                               " = scene."));
+    const double declared = total_load();
+    AssertThrow(declared > 0 || load == 0,
+                ExcMessage("Scene " + scene.name +
+                           " declares no load to scale to the requested " +
+                           key + "."));
+    scale_loads(declared > 0 ? load / declared : 0.);
   }
 
 

@@ -58,8 +58,7 @@ namespace Step3
     std::string              output_directory;
     std::vector<std::string> outputs;
     unsigned int             mesh_refinements;
-    // The total external load to scale the scene's loads to; none: the
-    // scene's own loads (and prescribed displacements) as declared.
+    // The resultant to scale the scene's loads to; none: as declared.
     std::optional<double> load;
     // Each case's coefficient for every pair; none: the scene's own.
     std::vector<std::optional<double>> friction_coefficients;
@@ -155,15 +154,9 @@ namespace Step3
         paper.empty() ? "" : Input::resolve_relative_to(paper, prm_file);
       output_directory = Utilities::trim(prm.get("output directory"));
       Input::check_output_directory(output_directory);
-      outputs                     = Observations::split(prm.get("outputs"));
-      mesh_refinements            = prm.get_integer("mesh refinements");
-      const std::string load_text = Utilities::trim(prm.get("load"));
-      load                        = std::nullopt;
-      if (load_text != "scene")
-        load =
-          SceneLimits::force(Input::to_double(load_text,
-                                              "load (a force in N, or scene)"),
-                             "load");
+      outputs          = Observations::split(prm.get("outputs"));
+      mesh_refinements = prm.get_integer("mesh refinements");
+      load = SceneLimits::optional_force(prm.get("load"), "scene", "load");
       friction_coefficients.clear();
       for (const std::string &mu :
            Utilities::split_string_list(prm.get("friction coefficients")))
@@ -263,42 +256,14 @@ namespace Step3
   }
 
 
-  // The sum of the magnitudes of the scene's forces at @p state (prescribed
-  // displacements left out).
-  double
-  external_force(const Scene &scene, const SceneState &state)
-  {
-    double total = 0;
-    for (unsigned int c = 0; c < scene.components.size(); ++c)
-      for (unsigned int l = 0; l < scene.components[c].loads.size(); ++l)
-        if (!scene.components[c].loads[l].is_displacement)
-          total += std::abs(state.load_forces[c][l]);
-    return total;
-  }
-
-
-  // The scene's loads, scaled to the requested resultant.
+  // The scene's loads, scaled to the requested resultant (none: as
+  // declared).
   SceneState
   ContactStudy::loaded_state(const Scene &scene) const
   {
     SceneState state(scene);
-    if (!parameters.load)
-      return state;
-    for (const ComponentDescription &c : scene.components)
-      for (const EdgeLoad &l : c.loads)
-        AssertThrow(!l.is_displacement,
-                    ExcMessage("load = " + std::to_string(*parameters.load) +
-                               ": scene " + scene.name +
-                               " prescribes a displacement (component " +
-                               c.name + ", support " + l.name +
-                               "), which a force cannot scale; set load = "
-                               "scene."));
-    const double declared = state.total_load();
-    AssertThrow(declared > 0 || *parameters.load == 0,
-                ExcMessage("Scene " + scene.name +
-                           " declares no load to scale to the requested "
-                           "load."));
-    state.scale_loads(declared > 0 ? *parameters.load / declared : 0.);
+    if (parameters.load)
+      state.scale_forces_to(scene, *parameters.load, "load");
     return state;
   }
 
@@ -375,7 +340,7 @@ namespace Step3
           std::fill(state.friction_coefficients.begin(),
                     state.friction_coefficients.end(),
                     *mu);
-        ContactCase c(bodies, state, external_force(scene, state));
+        ContactCase c(bodies, state, state.total_force(scene));
         {
           // A fresh full-order solver: its time is that of a cold solve
           // (factorisations included); a second solve shows the warm cost.

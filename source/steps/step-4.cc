@@ -189,8 +189,7 @@ namespace Step4
       check_cost_and_warn(scene);
     }
 
-    // The size of the model and of the Extension Principle, and the
-    // warnings of input that is valid but cannot be meant.
+    // Model and Extension Principle sizes; warnings of unlikely input.
     void
     check_cost_and_warn(const Scene &scene)
     {

@@ -155,10 +155,7 @@ namespace FuzzyContact
       {
         const ComponentDescription &master =
           scene.components[scene.component_index(pair.master_component)];
-        return (pair.master_face == Face::left ||
-                pair.master_face == Face::right)
-                 ? master.height()
-                 : master.length();
+        return master.face_length(pair.master_face);
       }
     } // namespace
 

@@ -46,6 +46,8 @@ namespace FuzzyContact
     std::map<types::material_id, double> material_areas;
     /** Number of mesh faces (edges) of each physical curve. */
     std::map<types::boundary_id, unsigned int> boundary_faces;
+    /** Length of each physical curve [m] (its straight mesh edges). */
+    std::map<types::boundary_id, double> boundary_lengths;
     /** Bounding box of the mesh [m], after scaling. */
     Point<2> lower_left, upper_right;
     /** Number of cells and of vertices of the mesh as read. */

@@ -192,6 +192,13 @@ namespace FuzzyContact
     unsigned int
     n_mesh_faces(const std::string &face) const;
 
+    /**
+     * Length of face @p face [m] (of a mesh file: of its straight mesh
+     * edges, before refinement).
+     */
+    double
+    face_length(const std::string &face) const;
+
     double
     length() const;
     double

@@ -12,6 +12,7 @@
 
 #include <fuzzycontact/scene/scene.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,15 @@ namespace FuzzyContact
     density(const double value, const std::string &what);
     double
     force(const double value, const std::string &what);
+
+    /**
+     * force() of @p text, or none if @p text is @p keyword ("scene", say);
+     * a message names @p what and both choices.
+     */
+    std::optional<double>
+    optional_force(const std::string &text,
+                   const std::string &keyword,
+                   const std::string &what);
     double
     friction_coefficient(const double value, const std::string &what);
 

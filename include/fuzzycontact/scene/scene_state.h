@@ -44,6 +44,23 @@ namespace FuzzyContact
     void
     scale_loads(const double factor);
 
+    /**
+     * sum |F| over the loads of @p scene (this state's scene) that are
+     * forces, prescribed displacements left out [N].
+     */
+    double
+    total_force(const Scene &scene) const;
+
+    /**
+     * Scales every load so that total_load() is @p load [N]. Refuses,
+     * naming @p key, a scene with a prescribed displacement (a force cannot
+     * scale it) and a non-zero @p load for a scene without loads.
+     */
+    void
+    scale_forces_to(const Scene       &scene,
+                    const double       load,
+                    const std::string &key);
+
     bool
     operator==(const SceneState &other) const;
     bool
