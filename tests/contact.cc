@@ -18,6 +18,7 @@
 #include <fuzzycontact/fe/beam_theory.h>
 #include <fuzzycontact/fe/component.h>
 #include <fuzzycontact/modal/modal_solver.h>
+#include <fuzzycontact/output/contact_report.h>
 #include <fuzzycontact/reduction/reduced_model.h>
 #include <fuzzycontact/scene/scene.h>
 #include <fuzzycontact/scene/scene_state.h>
@@ -1564,4 +1565,38 @@ TEST(HardCases, LoadSteps)
   // stacked: 1 %, not the 0.1 % target (see Solvers.AgreeOnBothScenes...).
   EXPECT_LE(relative(fc.normal_force, f.normal_force), 1e-2);
   EXPECT_LE(f.residual, 1e-10);
+}
+
+
+// A diagnostic solver that fails leaves a row that says so, and no number:
+// the other rows, the comparisons and results.json stay whole.
+TEST(ContactReport, AFailedSolverLeavesARowThatSaysSo)
+{
+  const Scene        scene = Scene::read_from_string(scene_text("overlap"));
+  ContactScene       bodies(scene, 0);
+  const Observations outputs(ContactReport::observed_outputs({"Fn"}), bodies);
+  ContactCase        c(bodies, SceneState(scene), 5e4);
+  c.runs.push_back(SolverRun::attempt("full_order", [&](SolverRun &run) {
+    FullOrderModel full(bodies, outputs.dofs());
+    full.set_state(SceneState(scene));
+    run.solution = full.solve();
+    run.outputs  = outputs.values(run.solution);
+  }));
+  c.runs.push_back(SolverRun::attempt("fl2c_modes", [](SolverRun &) {
+    AssertThrow(false, ExcMessage("FL2C did not converge in 7 iterations."));
+  }));
+  ASSERT_TRUE(c.runs[0].failure.empty());
+  EXPECT_EQ(c.runs[1].failure, "FL2C did not converge in 7 iterations.");
+  const std::string table = ContactReport::case_table(c, outputs, 1);
+  EXPECT_NE(table.find(
+              " fl2c_modes          failed: FL2C did not converge in 7 "
+              "iterations.\n"),
+            std::string::npos)
+    << table;
+  EXPECT_NE(table.find(" full_order "), std::string::npos) << table;
+  const nlohmann::json j = ContactReport::case_json(c, outputs, 1);
+  EXPECT_EQ(j["solvers"][1]["failed"],
+            "FL2C did not converge in 7 iterations.");
+  EXPECT_FALSE(j["solvers"][1].contains("Fn"));
+  EXPECT_GT(j["solvers"][0]["Fn"].get<double>(), 1e3);
 }

@@ -60,11 +60,11 @@ fuzzycontact_bad_input_tests(step-3 overlap "${step3_bad_inputs}"
   -DEXTRA_FILES=${CMAKE_SOURCE_DIR}/prm/stacked.prm)
 
 # FL2C with the paper's transition points and without its coarse correction
-# (the paper's regulators alone) oscillates on this scene: it must say so
-# and stop, not answer.
-fuzzycontact_program_test(step-3.bad_input.regulator_does_not_converge
+# (the paper's regulators alone) oscillates on this scene: its row must say
+# so, and the run go on (the other solvers' rows, results.json; exit 0).
+fuzzycontact_program_test(step-3.diagnostic_solver_fails
   step-3 overlap
-  -DEXPECT=failure
+  -DEXPECT=success
   -DEXTRA_FILES=${CMAKE_SOURCE_DIR}/prm/stacked.prm
   ${step3_coarse}
   -DEDIT_FILE=step
@@ -73,4 +73,4 @@ fuzzycontact_program_test(step-3.bad_input.regulator_does_not_converge
   -DEDIT2_FILE=step
   "-DEDIT2_FROM=set coarse correction = active set"
   "-DEDIT2_TO=set coarse correction = none"
-  "-DMESSAGE=fl2c_modes: the fuzzy regulators did not converge in 20000 iterations \\(load step 1\\); complementarity residual")
+  "-DMESSAGE= fl2c_modes +failed: fl2c_modes: the fuzzy regulators did not converge in 20000 iterations \\(load step 1\\); complementarity residual.*\n reduced_exact_modes +[-0-9]")

@@ -16,7 +16,8 @@
 # files that name more than one scene; the program runs there, behind
 # LAUNCHER if given. For
 # EXPECT=failure the program must exit non-zero, print a message matching
-# MESSAGE on stderr and leave no output folder. For
+# MESSAGE on stderr and leave no output folder (EXPECT=success: MESSAGE, if
+# given, must match its standard output). For
 # EXPECT=success it must exit 0 and write OUTPUT/results.json; JSON_CHECKS
 # then names a CMake script that inspects the variable RESULTS_JSON (and may
 # look at the other files in WORKDIR/OUTPUT).
@@ -88,6 +89,9 @@ else()
   endif()
   if(DEFINED JSON_CHECKS)
     include("${JSON_CHECKS}")
+  endif()
+  if(DEFINED MESSAGE AND NOT out MATCHES "${MESSAGE}")
+    message(FATAL_ERROR "stdout does not match <${MESSAGE}>:\n${out}")
   endif()
   message(STATUS "${out}")
 endif()

@@ -1,3 +1,4 @@
+#include <fuzzycontact/base/input.h>
 #include <fuzzycontact/output/contact_report.h>
 #include <fuzzycontact/output/report.h>
 
@@ -73,6 +74,37 @@ namespace FuzzyContact
       , n_dofs(bodies.n_dofs())
       , n_nodes(bodies.interface().n_nodes())
   {
+    std::ostringstream text;
+    const Scene       &s = bodies.scene();
+    for (unsigned int c = 0; c < s.components.size(); ++c)
+      for (unsigned int l = 0; l < s.components[c].loads.size(); ++l)
+        if (s.components[c].loads[l].is_displacement)
+          text << (text.str().empty() ? "" : ", ") << s.components[c].name
+               << "." << s.components[c].loads[l].name << " displaced by "
+               << state.load_forces[c][l] << " m";
+    if (text.str().empty() || load != 0)
+      text << (text.str().empty() ? "" : ", ") << "F = " << load << " N";
+    loading = text.str();
+  }
+
+
+  SolverRun
+  SolverRun::attempt(const std::string                      &name,
+                     const std::function<void(SolverRun &)> &solve)
+  {
+    SolverRun run;
+    try
+      {
+        solve(run);
+      }
+    catch (const ExceptionBase &e)
+      {
+        run                 = SolverRun();
+        run.solution.solver = name;
+        run.failure         = Utilities::trim(Input::message_of(e));
+        AssertThrow(!run.failure.empty(), ExcInternalError());
+      }
+    return run;
   }
 
 
@@ -128,10 +160,9 @@ namespace FuzzyContact
     {
       const SolverRun   &ref = c.runs[0];
       std::ostringstream out;
-      out << "\nCase " << c.scene << " (" << to_string(c.plane_model)
-          << "), F = " << c.load << " N, mu = " << c.friction_label() << "; "
-          << c.n_dofs[0] << " DoFs per component, " << c.n_nodes
-          << " slave nodes\n";
+      out << "\nCase " << c.scene << " (" << to_string(c.plane_model) << "), "
+          << c.loading << ", mu = " << c.friction_label() << "; " << c.n_dofs[0]
+          << " DoFs per component, " << c.n_nodes << " slave nodes\n";
       out << " solver              ";
       for (unsigned int k = 0; k < n_shown; ++k)
         out << std::setw(width(o[k])) << o[k].name;
@@ -140,6 +171,11 @@ namespace FuzzyContact
         {
           const ContactSolution &s = run.solution;
           out << " " << std::left << std::setw(20) << s.solver << std::right;
+          if (!run.failure.empty())
+            {
+              out << "failed: " << run.failure << "\n";
+              continue;
+            }
           for (unsigned int k = 0; k < n_shown; ++k)
             out << std::setw(width(o[k]))
                 << Format::scientific(run.outputs[k], digits(o[k]));
@@ -157,6 +193,8 @@ namespace FuzzyContact
       for (unsigned int r = 1; r < c.runs.size(); ++r)
         {
           const SolverRun &run = c.runs[r];
+          if (!run.failure.empty())
+            continue;
           out << " " << std::left << std::setw(20) << run.solution.solver
               << std::right;
           for (unsigned int k = 0; k < n_shown; ++k)
@@ -208,7 +246,13 @@ namespace FuzzyContact
         {
           const ContactSolution &s = run.solution;
           nlohmann::json         e;
-          e["name"]                 = s.solver;
+          e["name"] = s.solver;
+          if (!run.failure.empty())
+            {
+              e["failed"] = run.failure;
+              j["solvers"].push_back(e);
+              continue;
+            }
           e["Fn"]                   = value(run, "Fn");
           e["Ft"]                   = value(run, "Ft");
           e["slave_ux"]             = value(run, "slave.ux");
@@ -376,8 +420,9 @@ namespace FuzzyContact
         for (const SolverRun &run : c.runs)
           {
             const std::string &solver = run.solution.solver;
-            if (solver != "full_order" && solver != "fl2c_modes" &&
-                solver != "fl2c_corrected")
+            if (!run.failure.empty() ||
+                (solver != "full_order" && solver != "fl2c_modes" &&
+                 solver != "fl2c_corrected"))
               continue;
             std::ostringstream name;
             name << solver << " mu=" << c.friction_label();

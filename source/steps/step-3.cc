@@ -360,14 +360,15 @@ namespace Step3
                                      const ContactSolver &solver,
                                      const std::string   &name) {
           TimerOutput::Scope scope(timer, name);
-          model.set_n_load_steps(parameters.n_load_steps);
-          model.set_state(state);
-          SolverRun run;
-          run.solution = model.solve(solver, name);
-          run.outputs  = outputs.values(run.solution);
-          if (parameters.write_vtu)
-            run.fields = model.displacement_fields(run.solution);
-          return run;
+          // A diagnostic solver that fails leaves a "failed" row.
+          return SolverRun::attempt(name, [&](SolverRun &run) {
+            model.set_n_load_steps(parameters.n_load_steps);
+            model.set_state(state);
+            run.solution = model.solve(solver, name);
+            run.outputs  = outputs.values(run.solution);
+            if (parameters.write_vtu)
+              run.fields = model.displacement_fields(run.solution);
+          });
         };
         const ActiveSetSolver exact(parameters.exact);
         const FL2CSolver      fl2c(parameters.fl2c);

@@ -26,6 +26,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,19 @@ namespace FuzzyContact
     std::vector<double> outputs;
     /** Displacement fields for the VTU files (empty if not computed). */
     std::vector<Vector<double>> fields;
+    /**
+     * Why the solver failed (empty if it did not): the reports then give
+     * its row as "failed: <failure>" and leave it out of every comparison.
+     */
+    std::string failure;
+
+    /**
+     * Runs @p solve on a new SolverRun; an exception becomes the run's
+     * failure (solver named @p name) instead of ending the program.
+     */
+    static SolverRun
+    attempt(const std::string                      &name,
+            const std::function<void(SolverRun &)> &solve);
   };
 
   /** One scene, plane model and friction coefficient, all solvers. */
@@ -52,6 +66,8 @@ namespace FuzzyContact
     std::string scene;
     PlaneModel  plane_model;
     double      load;
+    /** "F = 50000 N", or the prescribed displacements (and F if any). */
+    std::string loading;
     /** The friction coefficient of every contact pair, and the pairs. */
     std::vector<double>                 mu;
     std::vector<ContactPairDescription> pairs;
