@@ -197,8 +197,11 @@ namespace FuzzyContact
       out << "step-4: fuzzy contact study of the scene '" << scene_name << "' ("
           << scene_file << "), " << n_processes << " MPI process(es)\n"
           << "fuzzy parameters:\n";
+      std::size_t width = 15;
       for (const FuzzyParameter &p : parameters)
-        out << "  " << std::left << std::setw(16) << p.quantity.name
+        width = std::max(width, p.quantity.name.size());
+      for (const FuzzyParameter &p : parameters)
+        out << "  " << std::left << std::setw(width + 1) << p.quantity.name
             << std::right << p.number.to_string() << "\n";
       out << n_alpha << " alpha levels\n";
       return out.str();
