@@ -1110,3 +1110,45 @@ TEST(Validation, HertzRollerOnBlock)
   // Frictionless: no tangential force; force balance of the nodal forces.
   EXPECT_NEAR(s.tangential_force, 0., 1e-10 * s.normal_force);
 }
+
+
+// A body its supports do not hold is refused before any solve, naming the
+// motion left free: a roller (x fixed) on P2's right face leaves it free to
+// slide along y; without any support all three motions are free.
+TEST(MeshFiles, AFloatingBodyIsRefusedNamingTheFreeMotion)
+{
+  const auto message_of_building = [](const std::string &text) {
+    try
+      {
+        const Scene  scene = Scene::read_from_string(text);
+        ContactScene bodies(scene, 0);
+      }
+    catch (const dealii::ExceptionBase &e)
+      {
+        return Input::message_of(e);
+      }
+    return std::string();
+  };
+  EXPECT_EQ(message_of_building(stacked_scene(false)), "");
+  std::string roller = stacked_scene(false);
+  roller.replace(roller.find("  set clamped faces = right\n"),
+                 std::string("  set clamped faces = right\n").size(),
+                 "  set supports = guide\n  subsection Support guide\n"
+                 "    set face = right\n    set fixed components = x\n"
+                 "  end\n");
+  std::string m = message_of_building(roller);
+  EXPECT_NE(m.find("Component P2: its clamps and supports leave a "
+                   "rigid-body motion free (translation along (0, 1))"),
+            std::string::npos)
+    << m;
+  std::string none = stacked_scene(false);
+  none.replace(none.find("  set clamped faces = right\n"),
+               std::string("  set clamped faces = right\n").size(),
+               "");
+  m = message_of_building(none);
+  EXPECT_NE(m.find("Component P2: its clamps and supports leave a "
+                   "rigid-body motion free ("),
+            std::string::npos)
+    << m;
+  EXPECT_NE(m.find("(and 2 more)"), std::string::npos) << m;
+}

@@ -21,6 +21,16 @@ namespace FuzzyContact
                                                     mesh_refinements,
                                                     timer));
         components_.push_back(owned.back().get());
+        const std::string free = owned.back()->free_rigid_motion();
+        AssertThrow(free.empty(),
+                    ExcMessage("Component " + d.name +
+                               ": its clamps and supports leave a rigid-body "
+                               "motion free (" +
+                               free +
+                               "); a body held by contact alone is not "
+                               "handled. Clamp a face, or add supports "
+                               "('supports', with 'fixed components') that "
+                               "hold it in x, in y and against rotation."));
       }
     const auto scope = timer_section(timer, "contact interface");
     interface_       = std::make_unique<ContactInterface>(scene_,

@@ -186,6 +186,15 @@ namespace FuzzyContact
     std::vector<Vector<double>>
     rigid_body_motions() const;
 
+    /**
+     * The rigid-body motion the clamps and supports leave free, in words
+     * ("translation along (0, 1)", "rotation about (0.2, 0.01)"), or an
+     * empty string if they hold all three. A static solve needs them held:
+     * a body held by contact alone is not handled.
+     */
+    std::string
+    free_rigid_motion() const;
+
   private:
     void
     make_mesh(const unsigned int n_refinements);
