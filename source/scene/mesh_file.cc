@@ -181,15 +181,35 @@ namespace FuzzyContact
     {
       if (points.size() < 3)
         return false;
-      double extent = 0;
+      // Straight: every point within round-off of the line through the
+      // first point and the one farthest from it.
+      Point<2> far = points[0];
       for (const Point<2> &p : points)
-        extent = std::max(extent, p.distance(points[0]));
+        if (p.distance(points[0]) > far.distance(points[0]))
+          far = p;
+      const double extent = far.distance(points[0]);
+      if (extent == 0)
+        return false;
+      const Tensor<1, 2> d        = (far - points[0]) / extent;
+      double             off_line = 0;
+      for (const Point<2> &p : points)
+        off_line = std::max(off_line,
+                            std::abs((p - points[0])[0] * d[1] -
+                                     (p - points[0])[1] * d[0]));
+      if (off_line <= 1e-10 * extent)
+        return false;
+      // Kasa's fit on coordinates centred and scaled to the extent, so that
+      // the 3 x 3 normal equations are well conditioned.
+      Point<2> mean;
+      for (const Point<2> &p : points)
+        mean += p / static_cast<double>(points.size());
       FullMatrix<double> A(3, 3);
       Vector<double>     b(3), x(3);
       for (const Point<2> &p : points)
         {
-          const double row[3] = {p[0], p[1], 1.};
-          const double rhs    = -(p[0] * p[0] + p[1] * p[1]);
+          const Tensor<1, 2> q      = (p - mean) / extent;
+          const double       row[3] = {q[0], q[1], 1.};
+          const double       rhs    = -q.norm_square();
           for (unsigned int i = 0; i < 3; ++i)
             {
               b[i] += row[i] * rhs;
@@ -197,22 +217,25 @@ namespace FuzzyContact
                 A(i, j) += row[i] * row[j];
             }
         }
-      if (std::abs(A.determinant()) < 1e-30 * std::pow(A.frobenius_norm(), 3))
-        return false; // collinear points
+      const double trace = A(0, 0) + A(1, 1) + A(2, 2);
+      if (std::abs(A.determinant()) <= 1e-12 * std::pow(trace / 3, 3))
+        return false;
       A.gauss_jordan();
       A.vmult(x, b);
-      arc.centre         = Point<2>(-x[0] / 2, -x[1] / 2);
-      const double r2    = arc.centre.square() - x[2];
-      arc.radius         = std::sqrt(std::max(r2, 0.));
+      const Point<2> centre(-x[0] / 2, -x[1] / 2);
+      const double   r2 = centre.square() - x[2];
+      if (r2 <= 0)
+        return false;
+      arc.centre         = mean + extent * centre;
+      arc.radius         = extent * std::sqrt(r2);
       double largest_off = 0;
       for (const Point<2> &p : points)
         largest_off =
           std::max(largest_off, std::abs(p.distance(arc.centre) - arc.radius));
-      // A straight line is a circle of infinite radius: refuse radii far
-      // beyond the points' extent as well.
-      return r2 > 0 && largest_off <= 1e-6 * arc.radius &&
-             arc.radius < 1e6 * extent;
+      // A nearly straight line is a circle of enormous radius: not an arc.
+      return largest_off <= 1e-6 * arc.radius && arc.radius < 1e6 * extent;
     }
+
 
     // Face counts, arcs, areas, bounding box of the triangulation.
     void
