@@ -299,6 +299,10 @@ namespace FuzzyContact
                  const double       scale,
                  const std::string &where)
   {
+    AssertThrow(std::filesystem::is_regular_file(file),
+                ExcMessage(where + ": <" + file +
+                           "> is not a file that exists (a relative path is "
+                           "read from the scene file's folder)."));
     MeshFileInfo info;
     info.file             = file;
     const std::string ext = extension_of(file);
