@@ -1,5 +1,7 @@
 #include <fuzzycontact/contact/face_geometry.h>
 
+#include <deal.II/lac/full_matrix.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -81,15 +83,15 @@ namespace FuzzyContact
     orientation = -orientation;
   }
 
-  // Closest point of the face's curve to @p x: Newton on
-  // (x(t) - x) . x'(t) = 0 from the chord's projection; t may leave
-  // [0, 1] (the point is then beyond the face).
   double
   FaceGeometry::closest_point(const Point<2> &x) const
   {
     const Tensor<1, 2> chord = nodes.back().position - nodes.front().position;
     double t = ((x - nodes.front().position) * chord) / chord.norm_square();
-    for (unsigned int it = 0; it < 30 && nodes.size() > 2; ++it)
+    // A straight face is parametrised linearly along its chord (its
+    // Lagrange curve interpolates a linear function): the chord's
+    // projection is the closest point.
+    for (unsigned int it = 0; it < 30 && nodes.size() > 2 && !straight; ++it)
       {
         const Tensor<1, 2> r  = point(t) - x;
         const Tensor<1, 2> d1 = derivative(t, 1);
@@ -106,8 +108,66 @@ namespace FuzzyContact
   }
 
 
+  double
+  FaceGeometry::distance_lower_bound(const Point<2> &x) const
+  {
+    double distance_squared = 0;
+    for (unsigned int d = 0; d < 2; ++d)
+      {
+        const double outside =
+          std::max({box_lower[d] - x[d], x[d] - box_upper[d], 0.});
+        distance_squared += outside * outside;
+      }
+    return std::sqrt(distance_squared);
+  }
+
+
   namespace
   {
+    // The box of the control points b_j of the curve's Bernstein form
+    // x(t) = sum_j B_j(t) b_j, B_j(t) = binom(p, j) t^j (1 - t)^(p - j),
+    // found from x(ts_i) = x_i; the curve on [0, 1] lies in their convex
+    // hull. Widened by round-off of the face's size.
+    void
+    set_bounding_box(FaceGeometry &g)
+    {
+      const unsigned int    n = g.nodes.size();
+      std::vector<Point<2>> b(n);
+      if (n == 2)
+        b = {g.nodes[0].position, g.nodes[1].position};
+      else
+        {
+          FullMatrix<double> B(n, n);
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j < n; ++j)
+              {
+                double binomial = 1;
+                for (unsigned int k = 0; k < j; ++k)
+                  binomial = binomial * (n - 1 - k) / (k + 1);
+                B(i, j) = binomial * std::pow(g.ts[i], j) *
+                          std::pow(1 - g.ts[i], n - 1 - j);
+              }
+          B.gauss_jordan();
+          for (unsigned int j = 0; j < n; ++j)
+            for (unsigned int i = 0; i < n; ++i)
+              b[j] += B(j, i) * g.nodes[i].position;
+        }
+      g.box_lower = g.box_upper = b[0];
+      for (const Point<2> &p : b)
+        for (unsigned int d = 0; d < 2; ++d)
+          {
+            g.box_lower[d] = std::min(g.box_lower[d], p[d]);
+            g.box_upper[d] = std::max(g.box_upper[d], p[d]);
+          }
+      const double margin = 1e-10 * g.box_lower.distance(g.box_upper);
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          g.box_lower[d] -= margin;
+          g.box_upper[d] += margin;
+        }
+    }
+
+
     template <typename CellIterator, typename FaceIterator>
     FaceGeometry
     face_geometry(const Component    &component,
@@ -161,6 +221,7 @@ namespace FuzzyContact
       const Point<2> middle = g.point(0.5);
       if (g.normal(0.5) * (middle - cell->center()) < 0)
         g.orientation = -1;
+      set_bounding_box(g);
       return g;
     }
 

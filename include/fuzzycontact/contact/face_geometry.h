@@ -42,6 +42,10 @@ namespace FuzzyContact
     // True if every node lies on the chord (to round-off): the normal is
     // then that of the chord, exactly.
     bool straight;
+    // A box that contains the curve for t in [0, 1]: that of the control
+    // points of its Bernstein form (the convex hull property), widened by
+    // round-off.
+    Point<2> box_lower, box_upper;
 
 
     /** x(t). */
@@ -58,11 +62,19 @@ namespace FuzzyContact
     reverse();
     /**
      * Closest point of the curve to @p x: Newton on (x(t) - x) . x'(t) = 0
-     * from the chord's projection; t may leave [0, 1] (the point is then
-     * beyond the face).
+     * from the chord's projection (a straight face: that projection
+     * itself); t may leave [0, 1] (the point is then beyond the face).
      */
     double
     closest_point(const Point<2> &x) const;
+
+    /**
+     * A lower bound of the distance from @p x to any point of the curve
+     * with t in [0, 1] (the distance to the box): a closest-point search
+     * skips the faces whose bound exceeds the best distance found.
+     */
+    double
+    distance_lower_bound(const Point<2> &x) const;
   };
 
   /** Every boundary face with boundary id @p id of component @p c. */
