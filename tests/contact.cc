@@ -12,6 +12,7 @@
 #include <fuzzycontact/contact/contact_interface.h>
 #include <fuzzycontact/contact/contact_problem.h>
 #include <fuzzycontact/contact/contact_solver.h>
+#include <fuzzycontact/contact/face_geometry.h>
 #include <fuzzycontact/contact/fl2c.h>
 #include <fuzzycontact/contact/full_order_contact.h>
 #include <fuzzycontact/contact/fuzzy_regulator.h>
@@ -992,6 +993,74 @@ TEST(FullOrderContact, ReusesFactorisationsWhenAModulusScales)
   setup.bodies.set_materials(SceneState(setup.scene));
   EXPECT_LT(reused.normal_force, full.solve().normal_force);
   EXPECT_EQ(full.n_factorizations(), 2u);
+}
+
+// The box a face keeps bounds the distance to its curve from below (the
+// closest-point search relies on it to skip faces), also for a curved
+// quadratic face whose middle node is off-centre, where the curve leaves
+// the box of its nodes; and it is not a trivial bound.
+TEST(FaceGeometry, BoxBoundsTheDistanceToTheCurve)
+{
+  FaceGeometry face;
+  for (const double angle : {-0.8, 0.6, 0.8})
+    face.nodes.push_back(
+      FaceNode{0, Point<2>(std::cos(angle), std::sin(angle)), {{0, 0}}});
+  const Tensor<1, 2> span =
+    face.nodes.back().position - face.nodes.front().position;
+  for (const FaceNode &node : face.nodes)
+    face.ts.push_back(((node.position - face.nodes.front().position) * span) /
+                      span.norm_square());
+  face.orientation = 1;
+  face.straight    = false;
+  face.set_bounding_box();
+
+  std::mt19937                           random(7);
+  std::uniform_real_distribution<double> coordinate(-3, 3);
+  double                                 tightest = 0;
+  for (unsigned int i = 0; i < 2000; ++i)
+    {
+      const Point<2> x(coordinate(random), coordinate(random));
+      double         distance = std::numeric_limits<double>::max();
+      for (unsigned int k = 0; k <= 4000; ++k)
+        distance = std::min(distance, face.point(k / 4000.).distance(x));
+      const double bound = face.distance_lower_bound(x);
+      EXPECT_LE(bound, distance + 1e-12) << x;
+      if (distance > 1)
+        tightest = std::max(tightest, bound / distance);
+    }
+  EXPECT_GT(tightest, 0.9);
+}
+
+
+// The scene's factorisations (those the reduced models are built from) are
+// shared when the solver is given them: it then makes none of its own, asks
+// once per component while each stiffness stays a multiple of the one it was
+// given, and answers as a solver with its own factorisations does.
+TEST(FullOrderContact, SharesTheFactorisationsItIsGiven)
+{
+  Bodies           setup(Scene::read(source_dir + "/prm/overlap.prm"));
+  FullOrderContact shared(setup.components, *setup.interface);
+  unsigned int     asked = 0;
+  shared.set_factorisation_source([&](const unsigned int c) {
+    ++asked;
+    return setup.bodies.stiffness_factorisation(c);
+  });
+  shared.observe(setup.outputs.dofs());
+  for (const double scale : {1., 1.05})
+    {
+      setup.state.zone_moduli = {{210e9 * scale}, {210e9 * scale}};
+      setup.bodies.set_materials(setup.state);
+      const Answer with_shared(setup, shared.solve());
+      const Answer with_own = full_order(setup);
+      EXPECT_NEAR(with_shared.normal_force,
+                  with_own.normal_force,
+                  1e-9 * with_own.normal_force);
+      EXPECT_NEAR(with_shared.slave_displacement[1],
+                  with_own.slave_displacement[1],
+                  1e-9 * std::abs(with_own.slave_displacement[1]));
+    }
+  EXPECT_EQ(shared.n_factorizations(), 0u);
+  EXPECT_EQ(asked, 2u);
 }
 
 TEST(FullOrderContact, WarmStartGivesTheSameAnswer)

@@ -122,52 +122,52 @@ namespace FuzzyContact
   }
 
 
-  namespace
+  // The box of the control points b_j of the curve's Bernstein form
+  // x(t) = sum_j B_j(t) b_j, B_j(t) = binom(p, j) t^j (1 - t)^(p - j),
+  // found from x(ts_i) = x_i; the curve on [0, 1] lies in their convex
+  // hull. Widened by round-off of the face's size.
+  void
+  FaceGeometry::set_bounding_box()
   {
-    // The box of the control points b_j of the curve's Bernstein form
-    // x(t) = sum_j B_j(t) b_j, B_j(t) = binom(p, j) t^j (1 - t)^(p - j),
-    // found from x(ts_i) = x_i; the curve on [0, 1] lies in their convex
-    // hull. Widened by round-off of the face's size.
-    void
-    set_bounding_box(FaceGeometry &g)
-    {
-      const unsigned int    n = g.nodes.size();
-      std::vector<Point<2>> b(n);
-      if (n == 2)
-        b = {g.nodes[0].position, g.nodes[1].position};
-      else
-        {
-          FullMatrix<double> B(n, n);
-          for (unsigned int i = 0; i < n; ++i)
-            for (unsigned int j = 0; j < n; ++j)
-              {
-                double binomial = 1;
-                for (unsigned int k = 0; k < j; ++k)
-                  binomial = binomial * (n - 1 - k) / (k + 1);
-                B(i, j) = binomial * std::pow(g.ts[i], j) *
-                          std::pow(1 - g.ts[i], n - 1 - j);
-              }
-          B.gauss_jordan();
+    const unsigned int    n = nodes.size();
+    std::vector<Point<2>> b(n);
+    if (n == 2)
+      b = {nodes[0].position, nodes[1].position};
+    else
+      {
+        FullMatrix<double> B(n, n);
+        for (unsigned int i = 0; i < n; ++i)
           for (unsigned int j = 0; j < n; ++j)
-            for (unsigned int i = 0; i < n; ++i)
-              b[j] += B(j, i) * g.nodes[i].position;
-        }
-      g.box_lower = g.box_upper = b[0];
-      for (const Point<2> &p : b)
-        for (unsigned int d = 0; d < 2; ++d)
-          {
-            g.box_lower[d] = std::min(g.box_lower[d], p[d]);
-            g.box_upper[d] = std::max(g.box_upper[d], p[d]);
-          }
-      const double margin = 1e-10 * g.box_lower.distance(g.box_upper);
+            {
+              double binomial = 1;
+              for (unsigned int k = 0; k < j; ++k)
+                binomial = binomial * (n - 1 - k) / (k + 1);
+              B(i, j) =
+                binomial * std::pow(ts[i], j) * std::pow(1 - ts[i], n - 1 - j);
+            }
+        B.gauss_jordan();
+        for (unsigned int j = 0; j < n; ++j)
+          for (unsigned int i = 0; i < n; ++i)
+            b[j] += B(j, i) * nodes[i].position;
+      }
+    box_lower = box_upper = b[0];
+    for (const Point<2> &p : b)
       for (unsigned int d = 0; d < 2; ++d)
         {
-          g.box_lower[d] -= margin;
-          g.box_upper[d] += margin;
+          box_lower[d] = std::min(box_lower[d], p[d]);
+          box_upper[d] = std::max(box_upper[d], p[d]);
         }
-    }
+    const double margin = 1e-10 * box_lower.distance(box_upper);
+    for (unsigned int d = 0; d < 2; ++d)
+      {
+        box_lower[d] -= margin;
+        box_upper[d] += margin;
+      }
+  }
 
 
+  namespace
+  {
     template <typename CellIterator, typename FaceIterator>
     FaceGeometry
     face_geometry(const Component    &component,
@@ -221,7 +221,7 @@ namespace FuzzyContact
       const Point<2> middle = g.point(0.5);
       if (g.normal(0.5) * (middle - cell->center()) < 0)
         g.orientation = -1;
-      set_bounding_box(g);
+      g.set_bounding_box();
       return g;
     }
 

@@ -123,6 +123,14 @@ namespace FuzzyContact
   }
 
   void
+  FullOrderContact::set_factorisation_source(
+    std::function<std::shared_ptr<const SparseCholesky>(unsigned int)> source)
+  {
+    factorisation_source = std::move(source);
+  }
+
+
+  void
   FullOrderContact::set_n_load_steps(const unsigned int n_load_steps)
   {
     AssertThrow(n_load_steps >= 1,
@@ -242,9 +250,21 @@ namespace FuzzyContact
             F.scale = scale;
             continue;
           }
-        F.inverse = std::make_unique<SparseDirectSolver>();
-        F.inverse->factorize(components[c]->stiffness_matrix());
-        ++factorizations;
+        if (factorisation_source)
+          F.inverse = factorisation_source(c);
+        else
+          {
+            auto inverse = std::make_shared<SparseCholesky>();
+            inverse->factorize(components[c]->stiffness_matrix(),
+                               {},
+                               "Component " + components[c]->name() +
+                                 ": the stiffness matrix");
+            F.inverse = std::move(inverse);
+            ++factorizations;
+          }
+        Assert(F.inverse != nullptr &&
+                 F.inverse->n() == components[c]->n_dofs(),
+               ExcInternalError());
         F.moduli = moduli;
         F.scale  = 1;
         F.load_responses.clear();

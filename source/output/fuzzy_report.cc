@@ -168,9 +168,10 @@ namespace FuzzyContact
             out << "this Extension Principle was " << std::setprecision(1)
                 << 1 / ratio << "x faster"
                 << (r.reference_reuses
-                      ? " (its full-order solves reuse the nominal "
-                        "factorisations; doc/performance.md gives the cost "
-                        "of independent analyses)"
+                      ? " (its full-order solves reuse the stiffness "
+                        "factorisations the model was built from; "
+                        "doc/performance.md gives the cost of independent "
+                        "analyses)"
                       : "")
                 << "\n";
           json["extension_principle_reference"] = kind;

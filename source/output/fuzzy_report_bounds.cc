@@ -93,7 +93,8 @@ namespace FuzzyContact
       const bool proved = r.has_proofs;
       out << "  the bounds' " << (proved ? "proofs and " : "") << "shapes ("
           << (proved ? "reduced - exact: the exact full-order "
-                       "solver at the bound's argument; "
+                       "solver at the bound's argument, on the stiffness "
+                       "factorisations the model was built from; "
                      : "")
           << "conv.: change of the bound over its last refinements, or "
              "its projected gradient, relative to the output's range)\n"

@@ -45,6 +45,12 @@ namespace FuzzyContact
                                                      parameters);
     solver->observe(observed);
     solver->set_n_load_steps(n_load_steps);
+    // Reused factorisations are the scene's own, which the reduced models
+    // were built from: the nominal stiffness is not factorised twice.
+    if (reuse)
+      solver->set_factorisation_source([this](const unsigned int c) {
+        return bodies.stiffness_factorisation(c);
+      });
     return solver;
   }
 

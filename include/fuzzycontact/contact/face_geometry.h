@@ -69,6 +69,12 @@ namespace FuzzyContact
     closest_point(const Point<2> &x) const;
 
     /**
+     * Sets the box from the nodes and their coordinates (faces_of() does).
+     */
+    void
+    set_bounding_box();
+
+    /**
      * A lower bound of the distance from @p x to any point of the curve
      * with t in [0, 1] (the distance to the box): a closest-point search
      * skips the faces whose bound exceeds the best distance found.

@@ -11,8 +11,11 @@
 //
 // where f_c = sum_l F_l f_l is the component's load, each load l a total
 // force F_l times its consistent nodal forces. It is solved by block
-// elimination: every K_c is factorised once by UMFPACK (sparse LU,
-// SparseDirectSolver), and the primal-dual active set method
+// elimination: every K_c is factorised once by a sparse Cholesky (CHOLMOD,
+// SparseCholesky; K_c is symmetric positive definite, floating bodies being
+// refused), or that factorisation is shared with whoever already made it
+// (set_factorisation_source(): the study's reduced models are built from
+// the same one), and the primal-dual active set method
 // (ActiveSetSolver) works on the Schur complement W = sum_c C_c K_c^{-1}
 // C_c^T, whose columns are computed only when the active set first needs
 // them (one back-substitution per component touched) and kept. The
@@ -40,7 +43,7 @@
 #ifndef fuzzycontact_contact_full_order_contact_h
 #define fuzzycontact_contact_full_order_contact_h
 
-#include <fuzzycontact/base/sparse_direct_solver.h>
+#include <fuzzycontact/base/sparse_cholesky.h>
 #include <fuzzycontact/contact/active_set_solver.h>
 #include <fuzzycontact/contact/contact_interface.h>
 #include <fuzzycontact/contact/contact_problem.h>
@@ -49,6 +52,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -66,6 +70,19 @@ namespace FuzzyContact
       const std::vector<const Component *> &components,
       const ContactInterface               &interface,
       const ActiveSetParameters            &parameters = ActiveSetParameters());
+
+    /**
+     * Where the factorisation of a component's stiffness comes from when
+     * one is needed: by default this object makes it; @p source(c) may
+     * instead return one made elsewhere (ContactScene's, which the reduced
+     * models were built from), which must be that of component c's
+     * current stiffness. A shared factorisation is not counted by
+     * n_factorizations().
+     */
+    void
+    set_factorisation_source(
+      std::function<std::shared_ptr<const SparseCholesky>(unsigned int)>
+        source);
 
     /**
      * The total force of every load [N], load_forces[c][l] for load l of
@@ -195,7 +212,7 @@ namespace FuzzyContact
     // far.
     struct Factorized
     {
-      std::unique_ptr<SparseDirectSolver>          inverse;
+      std::shared_ptr<const SparseCholesky>        inverse;
       std::vector<double>                          moduli;
       double                                       scale = 1;
       std::vector<Vector<double>>                  load_responses;
@@ -207,6 +224,8 @@ namespace FuzzyContact
     // Columns of W = sum_c (column of c) / s_c at the current scales.
     std::vector<std::unique_ptr<Vector<double>>> columns;
 
+    std::function<std::shared_ptr<const SparseCholesky>(unsigned int)>
+                                factorisation_source;
     std::optional<ContactState> last_state;
     unsigned int                factorizations     = 0;
     unsigned int                back_substitutions = 0;

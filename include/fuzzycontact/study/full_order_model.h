@@ -7,7 +7,9 @@
 //    one would run it without this project: new factorisations, exact
 //    active set, refined displacement fields;
 //  - with set_reuse_factorisations(true), the factorisations of the nominal
-//    stiffness and the columns of the contact flexibility are kept and
+//    stiffness (the scene's, ContactScene::stiffness_factorisation(), which
+//    the reduced models were built from) and the columns of the contact
+//    flexibility are kept and
 //    reused wherever that is exact (a stiffness that is a multiple of the
 //    nominal one), and only the observed outputs are formed: the same
 //    answers to about 1e-9, at a fraction of the cost. The nominal stiffness
