@@ -21,6 +21,7 @@ namespace FuzzyContact
     if (numeric != nullptr)
       umfpack_dl_free_numeric(&numeric);
     numeric = nullptr;
+    analysis_.reset();
     row_starts.clear();
     columns.clear();
     values.clear();
@@ -28,7 +29,7 @@ namespace FuzzyContact
 
 
   void
-  SparseDirectSolver::factorize(const SparseMatrix<double> &A)
+  SparseDirectSolver::copy_rows(const SparseMatrix<double> &A)
   {
     AssertThrow(A.m() == A.n(),
                 ExcMessage("SparseDirectSolver: the matrix must be square."));
@@ -50,32 +51,74 @@ namespace FuzzyContact
           }
         row_starts.push_back(columns.size());
       }
-
     control.resize(UMFPACK_CONTROL);
     umfpack_dl_defaults(control.data());
     control[UMFPACK_IRSTEP] = 0; // no iterative refinement in solve()
+  }
+
+
+  void
+  SparseDirectSolver::factorize(const SparseMatrix<double> &A)
+  {
+    factorize(A, nullptr);
+  }
+
+
+  void
+  SparseDirectSolver::factorize(const SparseMatrix<double>            &A,
+                                const std::shared_ptr<const Analysis> &analysis)
+  {
+    copy_rows(A);
+    if (analysis != nullptr && analysis->row_starts == row_starts &&
+        analysis->columns == columns)
+      analysis_ = analysis;
+    else
+      {
+        const long          n = A.m();
+        std::vector<double> info(UMFPACK_INFO);
+        void               *symbolic = nullptr;
+        const long          status   = umfpack_dl_symbolic(n,
+                                                n,
+                                                row_starts.data(),
+                                                columns.data(),
+                                                values.data(),
+                                                &symbolic,
+                                                control.data(),
+                                                info.data());
+        AssertThrow(status == UMFPACK_OK,
+                    ExcMessage("UMFPACK's symbolic factorisation failed with "
+                               "status " +
+                               std::to_string(status) + "."));
+        auto made = std::make_shared<Analysis>();
+        made->symbolic.reset(symbolic, [](void *p) {
+          umfpack_dl_free_symbolic(&p);
+        });
+        made->row_starts = row_starts;
+        made->columns    = columns;
+        analysis_        = std::move(made);
+      }
+    factorize_numeric();
+  }
+
+
+  std::shared_ptr<const SparseDirectSolver::Analysis>
+  SparseDirectSolver::analysis() const
+  {
+    return analysis_;
+  }
+
+
+  void
+  SparseDirectSolver::factorize_numeric()
+  {
     std::vector<double> info(UMFPACK_INFO);
-    void               *symbolic = nullptr;
-    long                status   = umfpack_dl_symbolic(n,
-                                      n,
-                                      row_starts.data(),
-                                      columns.data(),
-                                      values.data(),
-                                      &symbolic,
-                                      control.data(),
-                                      info.data());
-    AssertThrow(status == UMFPACK_OK,
-                ExcMessage("UMFPACK's symbolic factorisation failed with "
-                           "status " +
-                           std::to_string(status) + "."));
-    status = umfpack_dl_numeric(row_starts.data(),
-                                columns.data(),
-                                values.data(),
-                                symbolic,
-                                &numeric,
-                                control.data(),
-                                info.data());
-    umfpack_dl_free_symbolic(&symbolic);
+    const long          status = umfpack_dl_numeric(row_starts.data(),
+                                           columns.data(),
+                                           values.data(),
+                                           analysis_->symbolic.get(),
+                                           &numeric,
+                                           control.data(),
+                                           info.data());
     AssertThrow(status == UMFPACK_OK,
                 ExcMessage("UMFPACK's numeric factorisation failed with "
                            "status " +

@@ -157,10 +157,12 @@ namespace FuzzyContact
   // EigenDerivatives
   // ---------------------------------------------------------------------
 
-  EigenDerivatives::EigenDerivatives(const ParameterModel            &model,
-                                     const ModalBasis                &nominal,
-                                     const std::vector<unsigned int> &cluster,
-                                     const double cluster_gap)
+  EigenDerivatives::EigenDerivatives(
+    const ParameterModel                                      &model,
+    const ModalBasis                                          &nominal,
+    const std::vector<unsigned int>                           &cluster,
+    const double                                               cluster_gap,
+    const std::shared_ptr<const SparseDirectSolver::Analysis> &same_pattern)
       : model(model)
       , nominal(nominal)
       , cluster_(cluster)
@@ -255,7 +257,12 @@ namespace FuzzyContact
         auto solver = std::make_unique<SparseDirectSolver>();
         try
           {
-            solver->factorize(B);
+            // Bordered matrices of one size have one pattern: a symbolic
+            // analysis serves them all.
+            solver->factorize(B,
+                              factorisations.empty()
+                                ? same_pattern
+                                : factorisations.front()->analysis());
           }
         catch (const ExceptionBase &)
           {
@@ -267,6 +274,13 @@ namespace FuzzyContact
           }
         factorisations.push_back(std::move(solver));
       }
+  }
+
+
+  std::shared_ptr<const SparseDirectSolver::Analysis>
+  EigenDerivatives::analysis() const
+  {
+    return factorisations.front()->analysis();
   }
 
 

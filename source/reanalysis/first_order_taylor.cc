@@ -48,10 +48,16 @@ namespace FuzzyContact
       , nominal(nominal)
   {
     const unsigned int n_p = model.n_parameters();
+    std::shared_ptr<const SparseDirectSolver::Analysis> analysis;
     for (const auto &modes : reanalysis_clusters(nominal, cluster_gap))
       {
-        const EigenDerivatives derivatives(model, nominal, modes, cluster_gap);
-        Cluster                c;
+        const EigenDerivatives derivatives(model,
+                                           nominal,
+                                           modes,
+                                           cluster_gap,
+                                           analysis);
+        analysis = derivatives.analysis();
+        Cluster c;
         c.modes = modes;
         if (modes.size() == 1)
           c.derivatives = derivatives.derivatives(1);

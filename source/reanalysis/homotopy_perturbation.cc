@@ -14,8 +14,12 @@ namespace FuzzyContact
       , truncation_tolerance(truncation_tolerance)
   {
     for (const auto &modes : reanalysis_clusters(nominal, cluster_gap))
-      clusters.push_back(
-        std::make_unique<EigenDerivatives>(model, nominal, modes, cluster_gap));
+      clusters.push_back(std::make_unique<EigenDerivatives>(
+        model,
+        nominal,
+        modes,
+        cluster_gap,
+        clusters.empty() ? nullptr : clusters.back()->analysis()));
   }
 
 

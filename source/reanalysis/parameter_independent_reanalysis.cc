@@ -63,12 +63,16 @@ namespace FuzzyContact
     std::vector<EigenTaylorCoefficients> terms;
     {
       const auto s = scope("reanalysis offline: Lee's derivatives");
+      // The clusters' bordered matrices share one symbolic analysis.
+      std::shared_ptr<const SparseDirectSolver::Analysis> analysis;
       for (const auto &cluster : clusters_)
         {
           const EigenDerivatives derivatives(*model_,
                                              nominal_,
                                              cluster,
-                                             cluster_gap);
+                                             cluster_gap,
+                                             analysis);
+          analysis = derivatives.analysis();
           terms.push_back(
             derivatives.taylor_coefficients(identity,
                                             order,

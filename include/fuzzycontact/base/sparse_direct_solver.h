@@ -17,6 +17,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <memory>
 #include <vector>
 
 namespace FuzzyContact
@@ -39,6 +40,29 @@ namespace FuzzyContact
     void
     factorize(const SparseMatrix<double> &A);
 
+    /**
+     * UMFPACK's symbolic analysis of a matrix (its fill-reducing ordering,
+     * about half the cost of a factorisation) and the pattern it was made
+     * for, to share with matrices of that pattern.
+     */
+    struct Analysis
+    {
+      std::shared_ptr<void> symbolic;
+      std::vector<long>     row_starts, columns;
+    };
+
+    /**
+     * The same, reusing @p analysis (from analysis() of another solver)
+     * if @p A has its pattern; otherwise, or if it is null, as above.
+     */
+    void
+    factorize(const SparseMatrix<double>            &A,
+              const std::shared_ptr<const Analysis> &analysis);
+
+    /** The symbolic analysis of the factorised matrix. */
+    std::shared_ptr<const Analysis>
+    analysis() const;
+
     /** Overwrites @p b by A^{-1} b. */
     void
     solve(Vector<double> &b) const;
@@ -54,12 +78,21 @@ namespace FuzzyContact
     void
     clear();
 
+    /** Copies A's rows into the compressed arrays UMFPACK reads. */
+    void
+    copy_rows(const SparseMatrix<double> &A);
+
+    /** The numeric factorisation, from analysis_. */
+    void
+    factorize_numeric();
+
     // The rows of A in compressed form, handed to UMFPACK as the columns of
     // A^T (solves then use UMFPACK_At).
-    std::vector<long>   row_starts, columns;
-    std::vector<double> values;
-    void               *numeric = nullptr;
-    std::vector<double> control;
+    std::vector<long>               row_starts, columns;
+    std::vector<double>             values;
+    std::shared_ptr<const Analysis> analysis_;
+    void                           *numeric = nullptr;
+    std::vector<double>             control;
   };
 } // namespace FuzzyContact
 

@@ -191,12 +191,21 @@ namespace FuzzyContact
      * outside the cluster lies within max(@p cluster_gap,
      * minimum_cluster_gap) (relative) of one inside it, since the expansion
      * of an incomplete cluster is not defined. @p model and @p nominal must
-     * outlive this object.
+     * outlive this object. @p same_pattern: the analysis() of another
+     * cluster's derivatives, whose bordered matrices have the pattern of
+     * this one's if the clusters have one size (it is then shared, which
+     * halves the cost of each factorisation; otherwise it is ignored).
      */
     EigenDerivatives(const ParameterModel            &model,
                      const ModalBasis                &nominal,
                      const std::vector<unsigned int> &cluster,
-                     const double                     cluster_gap);
+                     const double                     cluster_gap,
+                     const std::shared_ptr<const SparseDirectSolver::Analysis>
+                       &same_pattern = nullptr);
+
+    /** The symbolic analysis of the bordered matrices' pattern. */
+    std::shared_ptr<const SparseDirectSolver::Analysis>
+    analysis() const;
 
     const std::vector<unsigned int> &
     cluster() const;
