@@ -45,6 +45,7 @@ namespace FuzzyContact
                                                      parameters);
     solver->observe(observed);
     solver->set_n_load_steps(n_load_steps);
+    solver->set_load_stages(bodies.scene().load_stages);
     return solver;
   }
 
