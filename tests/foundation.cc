@@ -6,6 +6,7 @@
 #include <fuzzycontact/base/progress.h>
 #include <fuzzycontact/base/sparse_cholesky.h>
 #include <fuzzycontact/base/sparse_direct_solver.h>
+#include <fuzzycontact/contact/active_set_solver.h>
 #include <fuzzycontact/fe/beam_theory.h>
 #include <fuzzycontact/fe/component.h>
 #include <fuzzycontact/fe/hertz_theory.h>
@@ -1153,4 +1154,224 @@ TEST(MeshFiles, AFloatingBodyIsRefusedNamingTheFreeMotion)
             std::string::npos)
     << m;
   EXPECT_NE(m.find("(and 2 more)"), std::string::npos) << m;
+}
+
+
+namespace
+{
+  // The stacked rectangles with a load history @p stages (inserted into
+  // the Scene subsection) and the Stage subsections @p sections.
+  std::string
+  staged_scene(const std::string &stages, const std::string &sections)
+  {
+    std::string       text  = stacked_scene(false);
+    const std::string pairs = "  set contact pairs = interface\n";
+    text.replace(text.find(pairs), pairs.size(), pairs + stages);
+    return text + sections;
+  }
+} // namespace
+
+
+// A one-stage history of every load is today's proportional loading, bit
+// for bit: through the full-order model (FullOrderContact's own stepping)
+// and through a ContactSolver on the dense problem.
+TEST(LoadStages, OneStageIsTheProportionalLoadBitForBit)
+{
+  const Scene plain  = Scene::read_from_string(stacked_scene(false));
+  const Scene staged = Scene::read_from_string(
+    staged_scene("  set load stages = all\n",
+                 "subsection Stage all\n  set loads = P1.tip\n"
+                 "  set load steps = 3\nend\n"));
+  ASSERT_EQ(staged.load_stages.size(), 1u);
+  EXPECT_EQ(staged.load_stages[0].n_load_steps, 3u);
+  ContactScene   plain_bodies(plain, 0), staged_bodies(staged, 0);
+  FullOrderModel proportional(plain_bodies, ObservedDofs(2));
+  proportional.set_n_load_steps(3);
+  FullOrderModel        history(staged_bodies, ObservedDofs(2));
+  const ContactSolution a = proportional.solve(), b = history.solve();
+  ASSERT_GT(a.count(ContactStatus::stick) + a.count(ContactStatus::slip), 0u);
+  ASSERT_GT(a.normal_force, 0.);
+  EXPECT_EQ(b.n_load_steps, 3u);
+  EXPECT_EQ(a.iterations, b.iterations);
+  EXPECT_EQ(a.status, b.status);
+  for (unsigned int i = 0; i < a.p.size(); ++i)
+    {
+      EXPECT_EQ(a.p[i], b.p[i]) << i;
+      EXPECT_EQ(a.g[i], b.g[i]) << i;
+    }
+
+  ContactProblem problem;
+  problem.W         = proportional.solver().flexibility();
+  problem.g_load    = proportional.solver().load_gaps();
+  problem.g_initial = plain_bodies.interface().initial_gaps();
+  problem.mu        = plain_bodies.interface().friction_coefficients();
+  const ActiveSetSolver solver;
+  const ContactState    c = solver.solve(problem, 1., 3, "test");
+  problem.stages          = {GapLoadStage{problem.g_load, 3}};
+  const ContactState d    = solver.solve(problem, 1., 7, "test");
+  EXPECT_EQ(c.iterations, d.iterations); // 3 steps, not 7
+  EXPECT_EQ(c.status, d.status);
+  for (unsigned int i = 0; i < c.p.size(); ++i)
+    EXPECT_EQ(c.p[i], d.p[i]) << i;
+}
+
+
+// solve_in_load_steps() on a made-up history of two stages (one node; the
+// "solver" returns the free gaps plus a tangential shift): stage 2 ramps
+// its own load on top of stage 1's held at full value, and every step
+// starts from the state the previous step returned, across the stages too.
+TEST(LoadStages, StagesHoldEarlierLoadsAndCarryTheState)
+{
+  Vector<double> g_initial(2), first(2), second(2);
+  g_initial[0] = 1;
+  first[0]     = -2;
+  second[1]    = 3;
+  std::vector<LoadStep>     seen;
+  std::vector<ContactState> returned;
+  const ContactState        last =
+    solve_in_load_steps(g_initial,
+                        {GapLoadStage{first, 2}, GapLoadStage{second, 3}},
+                        0.5,
+                        [&](const LoadStep &step) {
+                          seen.push_back(step);
+                          ContactState state;
+                          state.g = step.g_free;
+                          state.g[1] += 0.25 * step.step;
+                          state.p.reinit(2);
+                          state.p[0]       = step.step;
+                          state.status     = {step.stage == 0
+                                                ? ContactStatus::stick
+                                                : ContactStatus::slip};
+                          state.slip_sign  = {int(step.step)};
+                          state.iterations = 1;
+                          returned.push_back(state);
+                          return state;
+                        });
+  ASSERT_EQ(seen.size(), 5u);
+  EXPECT_EQ(last.iterations, 5u);
+  const double expected_normal[]     = {0.5, 0, 0, 0, 0};
+  const double expected_tangential[] = {0, 0, 0.5, 1, 1.5};
+  for (unsigned int i = 0; i < 5; ++i)
+    {
+      EXPECT_EQ(seen[i].step, i + 1);
+      EXPECT_EQ(seen[i].stage, i < 2 ? 0u : 1u);
+      EXPECT_DOUBLE_EQ(seen[i].g_free[0], expected_normal[i]) << i;
+      EXPECT_DOUBLE_EQ(seen[i].g_free[1], expected_tangential[i]) << i;
+      const Vector<double> &g_before = i == 0 ? g_initial : returned[i - 1].g;
+      EXPECT_EQ(seen[i].g_previous[0], g_before[0]) << i;
+      EXPECT_EQ(seen[i].g_previous[1], g_before[1]) << i;
+      EXPECT_EQ(seen[i].previous.p[0], i == 0 ? 0. : returned[i - 1].p[0]);
+      EXPECT_EQ(seen[i].previous.status[0],
+                i == 0 ? ContactStatus::open : returned[i - 1].status[0]);
+    }
+}
+
+
+// A bad load history is refused when the scene is read, naming the file
+// and the key: an unknown load, a load in two stages or in none, a stage
+// without loads, zero steps.
+TEST(LoadStages, BadStageListsAreRefusedWithTheFileAndTheKey)
+{
+  const auto message = [](const std::string &stages,
+                          const std::string &sections) {
+    return read_error(staged_scene(stages, sections));
+  };
+  const std::string two = "  set load stages = first, second\n";
+  std::string       m   = message(two,
+                          "subsection Stage first\n  set loads = P1.tip\n"
+                                  "end\nsubsection Stage second\n"
+                                  "  set loads = P1.tap\nend\n");
+  EXPECT_NE(m.find("Scene file <test.prm>: Stage second: loads: <P1.tap> is "
+                   "not a load of the scene"),
+            std::string::npos)
+    << m;
+  EXPECT_NE(m.find("it has: P1.tip."), std::string::npos) << m;
+  m = message(two,
+              "subsection Stage first\n  set loads = P1.tip\n"
+              "end\nsubsection Stage second\n  set loads = P1.tip\nend\n");
+  EXPECT_NE(m.find("test.prm>: Stage second: loads: <P1.tip> is already in "
+                   "stage first"),
+            std::string::npos)
+    << m;
+  m = message(two,
+              "subsection Stage first\n  set loads = P1.tip\n"
+              "end\nsubsection Stage second\n  set loads =\nend\n");
+  EXPECT_NE(m.find("test.prm>: Stage second: loads: a stage needs at least "
+                   "one load"),
+            std::string::npos)
+    << m;
+  m = message("  set load stages = first\n",
+              "subsection Stage first\n  set loads = P1.tip\n"
+              "  set load steps = 0\nend\n");
+  EXPECT_NE(m.find("test.prm>: Stage first: load steps must be at least 1, "
+                   "got 0."),
+            std::string::npos)
+    << m;
+  // A load in no stage: the stacked scene with a second load on P2.
+  std::string       text  = staged_scene("  set load stages = first\n",
+                                  "subsection Stage first\n"
+                                         "  set loads = P1.tip\nend\n");
+  const std::string clamp = "  set clamped faces = right\n";
+  text.replace(text.rfind(clamp),
+               clamp.size(),
+               clamp + "  set loads = push\n  subsection Load push\n"
+                       "    set face = left\n    set total force = 1\n"
+                       "  end\n");
+  m = read_error(text);
+  EXPECT_NE(m.find("test.prm>: Scene: load stages: the load <P2.push> is in "
+                   "no stage"),
+            std::string::npos)
+    << m;
+  // A stage the list does not name is an unknown subsection.
+  m = message("", "subsection Stage first\n  set loads = P1.tip\nend\n");
+  EXPECT_NE(m.find("Stage first"), std::string::npos) << m;
+}
+
+
+// Cattaneo-Mindlin partial slip on the Hertz geometry (prm/
+// cattaneo-mindlin.prm: one material, mu = 0.3), pressed down in a first
+// load stage and moved sideways in a second: for two sideways
+// displacements (Q / (mu P) = 0.46 and 0.80) the stick zone's half-width
+// c lies within two slave-node spacings of a sqrt(1 - Q / (mu P)), with a
+// the contact half-width of the same solution, and it sits in the middle
+// of the contact.
+TEST(Validation, CattaneoMindlinStickZone)
+{
+  const Scene scene = Scene::read(source_dir + "/prm/cattaneo-mindlin.prm");
+  ASSERT_EQ(scene.load_stages.size(), 2u);
+  const auto  &arc   = scene.components[0].mesh.arcs.begin()->second;
+  const double mu    = scene.contact_pairs[0].friction_coefficient;
+  unsigned int shear = 0;
+  for (unsigned int l = 0; l < scene.components[0].loads.size(); ++l)
+    if (scene.components[0].loads[l].name == "shear")
+      shear = l;
+  ContactScene   bodies(scene, 0);
+  FullOrderModel full(bodies, ObservedDofs(2));
+  for (const double shift : {20e-6, 36e-6})
+    {
+      SceneState state(scene);
+      state.load_forces[0][shear] = shift;
+      full.set_state(state);
+      const ContactSolution s = full.solve();
+      const auto            profile =
+        HertzTheory::profile(bodies.interface(),
+                             s,
+                             0,
+                             Point<2>(arc.centre[0],
+                                      arc.centre[1] - arc.radius),
+                             1.);
+      const auto   zone  = HertzTheory::contact_zone(profile);
+      const auto   stick = HertzTheory::stick_zone(profile);
+      const double ratio = std::abs(s.tangential_force) / (mu * s.normal_force);
+      EXPECT_GT(ratio, 0.2) << shift;
+      EXPECT_LT(ratio, 0.95) << shift;
+      EXPECT_GT(s.count(ContactStatus::slip), 0u) << shift;
+      const double c = HertzTheory::stick_half_width(zone.half_width,
+                                                     s.tangential_force,
+                                                     mu,
+                                                     s.normal_force);
+      EXPECT_NEAR(stick.half_width, c, 2 * stick.node_spacing)
+        << "u_x = " << shift << ", Q/(mu P) = " << ratio;
+      EXPECT_NEAR(stick.centre, 0., 2 * stick.node_spacing) << shift;
+    }
 }

@@ -118,10 +118,72 @@ namespace FuzzyContact
           AssertThrow(std::isfinite(W(i, j)),
                       ExcMessage("ContactProblem: W has a non-finite entry."));
       }
+    for (const GapLoadStage &stage : stages)
+      {
+        AssertThrow(stage.g_load.size() == m && stage.n_steps >= 1,
+                    ExcMessage("ContactProblem: a load stage needs 2 gap "
+                               "rows per node and at least one step."));
+        for (unsigned int i = 0; i < m; ++i)
+          AssertThrow(std::isfinite(stage.g_load[i]),
+                      ExcMessage("ContactProblem: a gap is not finite."));
+      }
     for (const double value : mu)
       AssertThrow(std::isfinite(value) && value >= 0,
                   ExcMessage("ContactProblem: friction coefficients must not "
                              "be negative."));
+  }
+
+
+  ContactState
+  solve_in_load_steps(
+    const Vector<double>                                &g_initial,
+    const std::vector<GapLoadStage>                     &stages,
+    const double                                         load_factor,
+    const std::function<ContactState(const LoadStep &)> &solve_step)
+  {
+    AssertThrow(!stages.empty(),
+                ExcMessage("A load history needs at least one stage."));
+    AssertThrow(std::isfinite(load_factor),
+                ExcMessage("The load factor must be finite."));
+    const unsigned int m = g_initial.size();
+    for (const GapLoadStage &stage : stages)
+      {
+        AssertThrow(stage.n_steps >= 1,
+                    ExcMessage("The number of load steps must be at least 1."));
+        AssertDimension(stage.g_load.size(), m);
+      }
+
+    ContactState state;
+    state.p.reinit(m);
+    state.g = g_initial;
+    state.status.assign(m / 2, ContactStatus::open);
+    state.slip_sign.assign(m / 2, 0);
+
+    unsigned int   iterations = 0, step_count = 0;
+    double         residual = 0;
+    Vector<double> g_held   = g_initial; // the earlier stages at full load
+    for (unsigned int stage = 0; stage < stages.size(); ++stage)
+      {
+        const GapLoadStage &current = stages[stage];
+        for (unsigned int s = 1; s <= current.n_steps; ++s)
+          {
+            LoadStep step;
+            step.step        = ++step_count;
+            step.stage       = stage;
+            step.load_factor = load_factor * s / current.n_steps;
+            step.g_free      = g_held;
+            step.g_free.add(step.load_factor, current.g_load);
+            step.g_previous = state.g;
+            step.previous   = state;
+            state           = solve_step(step);
+            iterations += state.iterations;
+            residual = std::max(residual, state.residual);
+          }
+        g_held.add(load_factor, current.g_load);
+      }
+    state.iterations = iterations;
+    state.residual   = residual;
+    return state;
   }
 
 
@@ -135,35 +197,11 @@ namespace FuzzyContact
   {
     AssertThrow(n_steps >= 1,
                 ExcMessage("The number of load steps must be at least 1."));
-    AssertThrow(std::isfinite(load_factor),
-                ExcMessage("The load factor must be finite."));
-    const unsigned int m = g_initial.size();
-    AssertDimension(g_load.size(), m);
-
-    ContactState state;
-    state.p.reinit(m);
-    state.g = g_initial;
-    state.status.assign(m / 2, ContactStatus::open);
-    state.slip_sign.assign(m / 2, 0);
-
-    unsigned int iterations = 0;
-    double       residual   = 0;
-    for (unsigned int s = 1; s <= n_steps; ++s)
-      {
-        LoadStep step;
-        step.step        = s;
-        step.load_factor = load_factor * s / n_steps;
-        step.g_free      = g_initial;
-        step.g_free.add(step.load_factor, g_load);
-        step.g_previous = state.g;
-        step.previous   = state;
-        state           = solve_step(step);
-        iterations += state.iterations;
-        residual = std::max(residual, state.residual);
-      }
-    state.iterations = iterations;
-    state.residual   = residual;
-    return state;
+    AssertDimension(g_load.size(), g_initial.size());
+    return solve_in_load_steps(g_initial,
+                               {GapLoadStage{g_load, n_steps}},
+                               load_factor,
+                               solve_step);
   }
 
 

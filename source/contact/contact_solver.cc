@@ -14,13 +14,19 @@ namespace FuzzyContact
                        const std::string    &what) const
   {
     problem.check();
+    const auto step = [&](const LoadStep &load_step) {
+      return solve_step(problem, load_step, what);
+    };
+    if (!problem.stages.empty())
+      return solve_in_load_steps(problem.g_initial,
+                                 problem.stages,
+                                 load_factor,
+                                 step);
     return solve_in_load_steps(problem.g_initial,
                                problem.g_load,
                                load_factor,
                                n_load_steps,
-                               [&](const LoadStep &step) {
-                                 return solve_step(problem, step, what);
-                               });
+                               step);
   }
 
 

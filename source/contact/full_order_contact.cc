@@ -139,6 +139,23 @@ namespace FuzzyContact
   }
 
   void
+  FullOrderContact::set_load_stages(const std::vector<LoadStage> &stages)
+  {
+    for (const LoadStage &stage : stages)
+      {
+        AssertThrow(stage.n_load_steps >= 1,
+                    ExcMessage("FullOrderContact: stage " + stage.name +
+                               " needs at least one load step."));
+        for (const auto &[c, l] : stage.loads)
+          AssertThrow(c < components.size() && l < load_forces_[c].size(),
+                      ExcMessage("FullOrderContact: stage " + stage.name +
+                                 " names a load the components do not "
+                                 "have."));
+      }
+    load_stages_ = stages;
+  }
+
+  void
   FullOrderContact::set_warm_start(const bool warm_start)
   {
     warm_start_ = warm_start;
@@ -191,12 +208,15 @@ namespace FuzzyContact
 
 
   Vector<double>
-  FullOrderContact::load_response(const unsigned int c) const
+  FullOrderContact::load_response(const unsigned int c,
+                                  const LoadStage   *stage) const
   {
     const Factorized &F = factorized[c];
     Vector<double>    u(components[c]->n_dofs());
     for (unsigned int l = 0; l < F.load_responses.size(); ++l)
       {
+        if (stage != nullptr && !stage->ramps(c, l))
+          continue;
         const double factor = load_forces_[c][l] / reference_forces_[c][l];
         if (factor == 1)
           u += F.load_responses[l];
@@ -350,17 +370,29 @@ namespace FuzzyContact
 
 
   Vector<double>
-  FullOrderContact::load_gaps()
+  FullOrderContact::load_gaps(const LoadStage *stage)
   {
     update_factorizations();
     Vector<double> g(interface.n_rows());
     for (unsigned int c = 0; c < components.size(); ++c)
       {
-        Vector<double> u = load_response(c);
+        Vector<double> u = load_response(c, stage);
         u /= factorized[c].scale;
         interface.gap_operator(c).vmult_add(g, u);
       }
     return g;
+  }
+
+
+  std::vector<GapLoadStage>
+  FullOrderContact::gap_load_stages()
+  {
+    if (load_stages_.empty())
+      return {GapLoadStage{load_gaps(), n_load_steps_}};
+    std::vector<GapLoadStage> stages;
+    for (const LoadStage &stage : load_stages_)
+      stages.push_back(GapLoadStage{load_gaps(&stage), stage.n_load_steps});
+    return stages;
   }
 
 
@@ -370,14 +402,16 @@ namespace FuzzyContact
     Timer timer;
     update_factorizations();
 
-    const Vector<double> g_load = load_gaps();
-    Flexibility          W(*this);
-    Vector<double>       last_g_previous;
-    const ContactState   state = solve_in_load_steps(
+    const std::vector<GapLoadStage> stages = gap_load_stages();
+    Flexibility                     W(*this);
+    Vector<double>                  last_g_previous;
+    unsigned int                    n_steps = 0;
+    for (const GapLoadStage &stage : stages)
+      n_steps += stage.n_steps;
+    const ContactState state = solve_in_load_steps(
       initial_gaps_,
-      g_load,
+      stages,
       load_factor_,
-      n_load_steps_,
       [&](const LoadStep &step) {
         LoadStep start = step;
         if (step.step == 1 && warm_start_ && last_state)
@@ -392,7 +426,7 @@ namespace FuzzyContact
                                  : outputs_only(state);
     solution.solver          = "full_order";
     solution.iterations      = state.iterations;
-    solution.n_load_steps    = n_load_steps_;
+    solution.n_load_steps    = n_steps;
     solution.compute_totals();
     solution.time = timer.wall_time();
     return solution;

@@ -61,7 +61,8 @@ namespace FuzzyContact
             {node.tangent * (node.slave.position - origin),
              solution.p_n(k) / (node.tributary_length * thickness),
              solution.status[k] != ContactStatus::open,
-             node.tributary_length});
+             node.tributary_length,
+             solution.status[k] == ContactStatus::stick});
         }
       std::sort(points.begin(),
                 points.end(),
@@ -116,6 +117,42 @@ namespace FuzzyContact
       zone.node_spacing = std::max(
         {first > 0 ? spacing(first - 1, first) : 0., spacing(last, last + 1)});
       return zone;
+    }
+
+
+    double
+    stick_half_width(const double half_width,
+                     const double tangential_force,
+                     const double mu,
+                     const double normal_force)
+    {
+      const double ratio = std::abs(tangential_force) / (mu * normal_force);
+      AssertThrow(ratio >= 0 && ratio <= 1,
+                  ExcMessage("Cattaneo-Mindlin: the tangential force must lie "
+                             "below mu P."));
+      return half_width * std::sqrt(1 - ratio);
+    }
+
+
+    StickZone
+    stick_zone(const std::vector<ProfilePoint> &profile)
+    {
+      unsigned int first = profile.size(), last = 0;
+      for (unsigned int i = 0; i < profile.size(); ++i)
+        if (profile[i].stick)
+          {
+            first = std::min(first, i);
+            last  = i;
+          }
+      AssertThrow(first < profile.size(),
+                  ExcMessage("Cattaneo-Mindlin: no slave node sticks."));
+      const auto spacing = [&](const unsigned int i, const unsigned int j) {
+        return j < profile.size() ? std::abs(profile[j].x - profile[i].x) : 0.;
+      };
+      return {0.5 * (profile[first].x + profile[last].x),
+              0.5 * (profile[last].x - profile[first].x),
+              std::max({first > 0 ? spacing(first - 1, first) : 0.,
+                        spacing(last, last + 1)})};
     }
   } // namespace HertzTheory
 } // namespace FuzzyContact

@@ -331,20 +331,45 @@ namespace FuzzyContact
   }
 
 
-  void
-  ReducedContactModel::assemble_load_gaps()
+  Vector<double>
+  ReducedContactModel::load_gaps(const LoadStage *stage) const
   {
-    problem_.g_load.reinit(problem_.g_initial.size());
+    Vector<double> g(problem_.g_initial.size());
     for (unsigned int c = 0; c < variable.size(); ++c)
       for (const Part *part : {&variable[c], &fixed[c]})
         if (part->present)
           for (unsigned int l = 0; l < part->load_gaps.size(); ++l)
             {
               const double factor = load_factor(c, l);
-              if (factor != 0)
-                problem_.g_load.add(factor / scales[c], part->load_gaps[l]);
+              if (factor != 0 && (stage == nullptr || stage->ramps(c, l)))
+                g.add(factor / scales[c], part->load_gaps[l]);
             }
+    return g;
+  }
+
+
+  void
+  ReducedContactModel::assemble_load_gaps()
+  {
+    problem_.g_load = load_gaps(nullptr);
+    problem_.stages.clear();
+    for (const LoadStage &stage : load_stages)
+      problem_.stages.push_back(
+        GapLoadStage{load_gaps(&stage), stage.n_load_steps});
     problem_.check();
+  }
+
+
+  void
+  ReducedContactModel::set_load_stages(const std::vector<LoadStage> &stages)
+  {
+    for (const LoadStage &stage : stages)
+      for (const auto &[c, l] : stage.loads)
+        AssertThrow(c < load_forces.size() && l < load_forces[c].size(),
+                    ExcMessage("ReducedContactModel: stage " + stage.name +
+                               " names a load the components do not have."));
+    load_stages = stages;
+    assemble_load_gaps();
   }
 
 

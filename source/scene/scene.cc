@@ -341,6 +341,9 @@ namespace FuzzyContact
       }
     for (const ContactPairDescription &p : contact_pairs)
       signature += p.name + ",";
+    signature += ";";
+    for (const LoadStage &stage : load_stages)
+      signature += stage.name + ",";
     return signature;
   }
 
@@ -353,7 +356,12 @@ namespace FuzzyContact
       Input::to_names(prm.get("components"), "Scene: components");
     const std::vector<std::string> pair_names =
       Input::to_names(prm.get("contact pairs"), "Scene: contact pairs");
+    const std::vector<std::string> stage_names =
+      Input::to_names(prm.get("load stages"), "Scene: load stages");
     prm.leave_subsection();
+    load_stages.clear();
+    for (const std::string &stage : stage_names)
+      load_stages.push_back(LoadStage{stage, {}, 1});
 
     // Keep what earlier passes learnt about components that are still there.
     std::vector<ComponentDescription> new_components(component_names.size());
@@ -410,6 +418,7 @@ namespace FuzzyContact
       parse_component(prm, component, source_file);
     for (ContactPairDescription &pair : contact_pairs)
       parse_contact_pair(prm, pair);
+    parse_load_stages(prm);
 
     check();
   }

@@ -273,8 +273,16 @@ namespace FuzzyContact
                         Patterns::Anything(),
                         "Comma-separated names of the contact pairs; each "
                         "has a subsection 'Contact <name>'.");
+      prm.declare_entry("load stages",
+                        "",
+                        Patterns::Anything(),
+                        "Comma-separated names of the stages of the load "
+                        "history, in order; each has a subsection 'Stage "
+                        "<name>'. Empty: all loads in one proportional "
+                        "stage.");
     }
     prm.leave_subsection();
+    declare_load_stages(prm);
 
     for (const ComponentDescription &component : components)
       declare_component(prm, component);

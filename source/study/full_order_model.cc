@@ -45,6 +45,7 @@ namespace FuzzyContact
                                                      parameters);
     solver->observe(observed);
     solver->set_n_load_steps(n_load_steps);
+    solver->set_load_stages(bodies.scene().load_stages);
     // Reused factorisations are the scene's own, which the reduced models
     // were built from: the nominal stiffness is not factorised twice.
     if (reuse)

@@ -180,6 +180,7 @@ namespace FuzzyContact
       std::make_unique<ReducedContactModel>(std::move(nominal),
                                             interface.initial_gaps(),
                                             interface.friction_coefficients());
+    reduced->set_load_stages(bodies.scene().load_stages);
     for (unsigned int c = 0; c < n_c; ++c)
       if (models[c]->split)
         reduced->set_fixed_part(c,
@@ -529,7 +530,13 @@ namespace FuzzyContact
       contact_solver.solve(reduced->problem(), 1., n_load_steps, name);
     ContactSolution s = reduced->solution(state, 1., name);
     s.n_load_steps    = n_load_steps;
-    s.time            = clock.wall_time();
+    if (!reduced->problem().stages.empty())
+      {
+        s.n_load_steps = 0;
+        for (const GapLoadStage &stage : reduced->problem().stages)
+          s.n_load_steps += stage.n_steps;
+      }
+    s.time = clock.wall_time();
     return s;
   }
 

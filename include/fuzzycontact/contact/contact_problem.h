@@ -20,12 +20,19 @@
 //     opposes the slip).
 //
 // The load is applied proportionally in n_load_steps equal steps (lambda =
-// 1/n, 2/n, ..., 1). Friction depends on the path, so each step solves the
+// 1/n, 2/n, ..., 1), or along a load history of stages: stage s ramps its
+// own loads (gap change g_load,s) from 0 to full in its own n_s steps, on
+// top of the earlier stages' loads held at full value,
+//
+//     g_free = g_initial + sum_{r < s} g_load,r + (i / n_s) g_load,s,
+//
+// (all of it times an overall load factor); the proportional load is the
+// one-stage history. Friction depends on the path, so each step solves the
 // incremental problem in which dg_t = g_t - g_t,previous is the tangential
 // displacement since the converged previous step (g_t,previous = 0 before
-// the first step). All solvers solve exactly this discrete problem, so that
-// their differences measure only the error of the model (W, g_load) and the
-// error of the algorithm.
+// the first step); the state carries from stage to stage. All solvers solve
+// exactly this discrete problem, so that their differences measure only the
+// error of the model (W, g_load) and the error of the algorithm.
 //
 // The complementarity residual of a state is measured with the natural
 // nonlinear complementarity functions (Hueber, Stadler and Wohlmuth 2008)
@@ -133,6 +140,17 @@ namespace FuzzyContact
   };
 
   /**
+   * One stage of a load history as the gaps see it: the change of the
+   * gaps under the stage's loads at full value (load factor 1), applied in
+   * n_steps equal steps.
+   */
+  struct GapLoadStage
+  {
+    Vector<double> g_load;
+    unsigned int   n_steps = 1;
+  };
+
+  /**
    * A contact problem of small dense size: the reduced problem (or the full
    * one, once its W is known). It does not care how W and the gaps were
    * obtained.
@@ -154,6 +172,11 @@ namespace FuzzyContact
     Vector<double> g_initial;
     /** Change of the gaps under the external load at load factor 1. */
     Vector<double> g_load;
+    /**
+     * The load history, if the loads are applied in stages (their g_load
+     * add up to g_load); empty: one proportional stage.
+     */
+    std::vector<GapLoadStage> stages;
     /** Friction coefficient of every node. */
     std::vector<double> mu;
 
@@ -196,9 +219,12 @@ namespace FuzzyContact
   /** Everything a load step needs to know. */
   struct LoadStep
   {
-    unsigned int step; // 1, ..., n_steps
+    /** 1, ..., total number of steps (counted over all stages). */
+    unsigned int step;
+    /** The stage (0, 1, ...) and the factor of its loads. */
+    unsigned int stage = 0;
     double       load_factor;
-    /** g_initial + load_factor g_load. */
+    /** g_initial + the earlier stages' g_load + load_factor g_load. */
     Vector<double> g_free;
     /** Gaps at the end of the previous step (tangential rows: the
      * reference of the slip increment); zero before the first step. */
@@ -208,9 +234,22 @@ namespace FuzzyContact
   };
 
   /**
-   * Applies the load in @p n_steps equal increments up to @p load_factor,
-   * calling @p solve_step for each; returns the last state with the
-   * iterations summed over all steps and the largest residual.
+   * Applies the load history @p stages (each stage's loads in its own
+   * steps, on top of the earlier stages' loads), all loads times
+   * @p load_factor, calling @p solve_step for each step from the state the
+   * previous one converged to; returns the last state with the iterations
+   * summed over all steps and the largest residual.
+   */
+  ContactState
+  solve_in_load_steps(
+    const Vector<double>                                &g_initial,
+    const std::vector<GapLoadStage>                     &stages,
+    const double                                         load_factor,
+    const std::function<ContactState(const LoadStep &)> &solve_step);
+
+  /**
+   * The one-stage history: the load in @p n_steps equal increments up to
+   * @p load_factor.
    */
   ContactState
   solve_in_load_steps(

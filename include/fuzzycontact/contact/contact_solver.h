@@ -46,8 +46,10 @@ namespace FuzzyContact
                const std::string    &what) const = 0;
 
     /**
-     * All @p n_load_steps proportional load steps up to @p load_factor
-     * (see solve_in_load_steps()).
+     * All @p n_load_steps proportional load steps up to @p load_factor, or,
+     * if @p problem has load stages, the steps of its stages (each with its
+     * own number of steps; @p n_load_steps is then not used); see
+     * solve_in_load_steps().
      */
     ContactState
     solve(const ContactProblem &problem,

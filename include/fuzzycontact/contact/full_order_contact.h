@@ -104,6 +104,13 @@ namespace FuzzyContact
     /** Proportional load steps (default 1). */
     void
     set_n_load_steps(const unsigned int n_load_steps);
+    /**
+     * The load history (Scene::load_stages): each stage ramps its loads in
+     * its own steps (set_n_load_steps() is then not used); empty (the
+     * default): one proportional stage.
+     */
+    void
+    set_load_stages(const std::vector<LoadStage> &stages);
     /** Start each solve from the statuses of the previous one. */
     void
     set_warm_start(const bool warm_start);
@@ -144,9 +151,12 @@ namespace FuzzyContact
      */
     FullMatrix<double>
     flexibility();
-    /** g_load = C K^{-1} f at load factor 1. */
+    /**
+     * g_load = C K^{-1} f at load factor 1: of every load, or of the loads
+     * of @p stage only.
+     */
     Vector<double>
-    load_gaps();
+    load_gaps(const LoadStage *stage = nullptr);
 
     /** How many sparse LU factorisations and back-substitutions so far. */
     unsigned int
@@ -174,9 +184,15 @@ namespace FuzzyContact
     /** The load of component c at load factor 1. */
     Vector<double>
     load_vector(const unsigned int c) const;
-    /** K_c^{-1} f_c at load factor 1, from the kept load responses. */
+    /**
+     * K_c^{-1} f_c at load factor 1, from the kept load responses (of the
+     * loads of @p stage only, if given).
+     */
     Vector<double>
-    load_response(const unsigned int c) const;
+    load_response(const unsigned int c, const LoadStage *stage = nullptr) const;
+    /** The load history as the gaps see it (one stage per load stage). */
+    std::vector<GapLoadStage>
+    gap_load_stages();
     /** The displacement of DoF @p dof of component @p c for forces @p p. */
     double
     observed_displacement(const unsigned int            c,
@@ -199,6 +215,7 @@ namespace FuzzyContact
     unsigned int                   n_load_steps_        = 1;
     bool                           warm_start_          = false;
     bool                           displacement_fields_ = true;
+    std::vector<LoadStage>         load_stages_;
     // Loads per component and load, and the reference forces of the kept
     // load responses (the declared force, or 1 N for a declared zero).
     std::vector<std::vector<double>> load_forces_, reference_forces_;

@@ -56,6 +56,8 @@ namespace FuzzyContact
       bool   closed;
       /** The length of slave face the node stands for [m]. */
       double tributary;
+      /** Closed and sticking. */
+      bool stick = false;
     };
 
     /**
@@ -95,6 +97,31 @@ namespace FuzzyContact
     /** The averaged pressure of every node of @p profile (see ContactZone). */
     std::vector<double>
     averaged_pressures(const std::vector<ProfilePoint> &profile);
+
+    /**
+     * Cattaneo-Mindlin partial slip of the cylinder (both bodies of one
+     * material, normal load P first, then a tangential load Q < mu P): the
+     * stick zone in the middle of the contact has the half-width
+     * c = a sqrt(1 - Q / (mu P)).
+     */
+    double
+    stick_half_width(const double half_width,
+                     const double tangential_force,
+                     const double mu,
+                     const double normal_force);
+
+    /** The stick zone of a profile: its centre and half-width. */
+    struct StickZone
+    {
+      double centre;
+      double half_width;
+      /** Spacing of the slave nodes at the zone's edges (the larger). */
+      double node_spacing;
+    };
+
+    /** Throws if no node sticks. */
+    StickZone
+    stick_zone(const std::vector<ProfilePoint> &profile);
   } // namespace HertzTheory
 } // namespace FuzzyContact
 

@@ -53,6 +53,7 @@
 
 #include <fuzzycontact/contact/contact_problem.h>
 #include <fuzzycontact/reduction/reduced_component.h>
+#include <fuzzycontact/scene/scene.h>
 
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
@@ -90,6 +91,15 @@ namespace FuzzyContact
      */
     void
     set_load_forces(const std::vector<std::vector<double>> &load_forces);
+
+    /**
+     * The load history (Scene::load_stages): the problem gets one
+     * GapLoadStage per stage, the g_load of the stage's loads only, kept up
+     * to date with the forces and stiffness scales. Empty (the default): one
+     * proportional stage.
+     */
+    void
+    set_load_stages(const std::vector<LoadStage> &stages);
 
     /**
      * The problem: W as an operator (ContactProblem::flexibility) that
@@ -188,9 +198,13 @@ namespace FuzzyContact
     // The state of W changed: columns are combined afresh.
     void
     flexibility_changed();
-    // g_load = sum_c sum_l (F_l / F_ref,l) g_load,c,l / s_c.
+    // g_load = sum_c sum_l (F_l / F_ref,l) g_load,c,l / s_c, and that of
+    // each load stage.
     void
     assemble_load_gaps();
+    // The sum above over every load, or over the loads of @p stage only.
+    Vector<double>
+    load_gaps(const LoadStage *stage) const;
     // F_l / F_ref,l of load l of component c.
     double
     load_factor(const unsigned int c, const unsigned int l) const;
@@ -198,6 +212,7 @@ namespace FuzzyContact
     std::vector<Part>                variable, fixed;
     std::vector<double>              scales;
     std::vector<std::vector<double>> load_forces;
+    std::vector<LoadStage>           load_stages;
     std::shared_ptr<Flexibility>     flexibility_;
     ContactProblem                   problem_;
   };

@@ -237,6 +237,25 @@ namespace FuzzyContact
   };
 
   /**
+   * One stage of a load history (scene key `load stages`, one `Stage
+   * <name>` subsection each): the loads it ramps from 0 to their full value
+   * in its own load steps, on top of the earlier stages' loads held at
+   * full value. A support's prescribed displacement is a load of the
+   * support's name (EdgeLoad::is_displacement).
+   */
+  struct LoadStage
+  {
+    std::string name;
+    /** The loads it ramps, as {component index, load index}. */
+    std::vector<std::array<unsigned int, 2>> loads;
+    unsigned int                             n_load_steps = 1;
+
+    /** True if the stage ramps load @p l of component @p c. */
+    bool
+    ramps(const unsigned int c, const unsigned int l) const;
+  };
+
+  /**
    * A scene: the plane model, the components and the contact pairs.
    */
   class Scene
@@ -280,6 +299,12 @@ namespace FuzzyContact
     PlaneModel                          plane_model = PlaneModel::plane_stress;
     std::vector<ComponentDescription>   components;
     std::vector<ContactPairDescription> contact_pairs;
+    /**
+     * The load history; empty: every load applied proportionally in one
+     * stage (the step program's `load steps`). When given, every load of
+     * the scene is in exactly one stage.
+     */
+    std::vector<LoadStage> load_stages;
 
   private:
     /**
@@ -293,6 +318,17 @@ namespace FuzzyContact
     /** All names (components, zones, loads, pairs) in one string. */
     std::string
     names_signature() const;
+
+    /** Declares the `Stage <name>` subsections of the known stages. */
+    void
+    declare_load_stages(ParameterHandler &prm) const;
+
+    /**
+     * Reads the stages' loads and steps (after the components, whose loads
+     * they name) and checks that every load is in exactly one stage.
+     */
+    void
+    parse_load_stages(ParameterHandler &prm);
 
     /** Checks what can be checked without a mesh. */
     void
