@@ -251,6 +251,11 @@ INSTANTIATE_TEST_SUITE_P(
              "set face = tip",
              "Component beam, load tip: face: <tip> is not a face of a "
              "rectangular component"},
+    BadInput{"pressure_and_total_force",
+             "set direction   = 0, -1",
+             "set direction = 0, -1\n    set pressure = 1e6",
+             "Component beam, load tip: set either total force or pressure, "
+             "not both."},
     BadInput{"zero_load_direction",
              "set direction   = 0, -1",
              "set direction = 0, 0",
