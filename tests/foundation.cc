@@ -9,6 +9,7 @@
 #include <fuzzycontact/fe/beam_theory.h>
 #include <fuzzycontact/fe/component.h>
 #include <fuzzycontact/fe/hertz_theory.h>
+#include <fuzzycontact/fe/patch_test.h>
 #include <fuzzycontact/modal/modal_solver.h>
 #include <fuzzycontact/output/output_files.h>
 #include <fuzzycontact/scene/scene.h>
@@ -27,6 +28,7 @@
 #include <fstream>
 #include <iomanip>
 #include <sstream>
+#include <tuple>
 #include <unistd.h>
 
 using namespace FuzzyContact;
@@ -1335,4 +1337,80 @@ TEST(MeshFiles, AFloatingBodyIsRefusedNamingTheFreeMotion)
             std::string::npos)
     << m;
   EXPECT_NE(m.find("(and 2 more)"), std::string::npos) << m;
+}
+
+
+// The contact patch test (prm/patch-test.prm, doc/validation.md): two
+// blocks of one material under a uniform compression, whose exact solution
+// is a uniform pressure p = E delta / ((1 - nu^2) H) (plane strain) and a
+// linear displacement field. On matching meshes node-to-segment contact
+// passes it to round-off; on non-matching meshes (the slave face finer,
+// then coarser) it does not, and the errors stay below the bounds measured
+// by build/patch_test (with a margin). Force balance holds to round-off on
+// every mesh: the supports' reactions equal the contact force and every
+// free DoF is in equilibrium.
+TEST(Validation, ContactPatchTest)
+{
+  const Scene scene     = Scene::read(source_dir + "/prm/patch-test.prm");
+  const auto  errors_of = [&](const unsigned int slave_cells,
+                             const unsigned int master_cells) {
+    Scene s                         = scene;
+    s.components[0].subdivisions[0] = slave_cells;
+    s.components[1].subdivisions[0] = master_cells;
+    ContactScene   bodies(s, 0);
+    FullOrderModel full(bodies, ObservedDofs(2));
+    full.set_state(SceneState(s));
+    const ContactSolution solution = full.solve();
+    const auto           &upper    = s.components[0];
+    return PatchTest::measure(bodies.components(),
+                              bodies.interface(),
+                              solution,
+                              {s.plane_model,
+                               upper.zones[0].youngs_modulus,
+                               upper.zones[0].poissons_ratio,
+                               upper.upper_right[1] -
+                                 s.components[1].lower_left[1],
+                               -upper.supports[0].displacement[1]});
+  };
+  // p = 210e9 / (1 - 0.09) * 1e-5 / 0.1, computed by hand.
+  const PatchTest::UniaxialCompression exact{PlaneModel::plane_strain,
+                                             210e9,
+                                             0.3,
+                                             0.1,
+                                             1e-5};
+  EXPECT_NEAR(exact.pressure(), 2.3076923076923077e7, 1e-6);
+
+  const PatchTest::Errors matching = errors_of(5, 5);
+  EXPECT_EQ(matching.n_closed, matching.n_slave_nodes);
+  EXPECT_LT(matching.max_pressure_error, 1e-9);
+  EXPECT_LT(matching.max_displacement_error, 1e-9);
+  EXPECT_NEAR(matching.contact_force,
+              matching.exact_force,
+              1e-9 * matching.exact_force);
+  // Measured (build/patch_test, Q2 at the scene's mesh): slave finer 7:5,
+  // pressure 5.48e-2, displacement 8.47e-3, force -2.92e-4; slave coarser
+  // 5:7, 0.224, 2.64e-2, -4.96e-3. The bounds leave 10 to 40 %: a change
+  // of the contact discretisation that makes it worse fails.
+  const std::tuple<unsigned int, unsigned int, double, double, double>
+    non_matching[] = {{7, 5, 0.06, 0.01, 4e-4}, {5, 7, 0.25, 0.03, 6e-3}};
+  for (const auto &[slave, master, pressure, displacement, force] :
+       non_matching)
+    {
+      const PatchTest::Errors e = errors_of(slave, master);
+      SCOPED_TRACE(std::to_string(slave) + ":" + std::to_string(master));
+      EXPECT_EQ(e.n_closed, e.n_slave_nodes);
+      EXPECT_GT(e.max_pressure_error, 1e-3); // it does not pass exactly
+      EXPECT_LT(e.max_pressure_error, pressure);
+      EXPECT_LT(e.max_displacement_error, displacement);
+      EXPECT_NEAR(e.contact_force, e.exact_force, force * e.exact_force);
+    }
+  for (const PatchTest::Errors &e :
+       {matching, errors_of(7, 5), errors_of(5, 7)})
+    {
+      EXPECT_LT(e.reaction_balance, 1e-10);
+      EXPECT_LT(e.equilibrium_residual, 1e-10);
+      ASSERT_EQ(e.reactions.size(), 2u);
+      EXPECT_LT(e.reactions[0], 0.); // the press pushes the upper block down
+      EXPECT_GT(e.reactions[1], 0.); // the base holds the lower block up
+    }
 }
