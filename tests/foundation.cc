@@ -10,6 +10,7 @@
 #include <fuzzycontact/fe/beam_theory.h>
 #include <fuzzycontact/fe/component.h>
 #include <fuzzycontact/fe/hertz_theory.h>
+#include <fuzzycontact/fe/patch_test.h>
 #include <fuzzycontact/modal/modal_solver.h>
 #include <fuzzycontact/output/output_files.h>
 #include <fuzzycontact/scene/scene.h>
@@ -28,6 +29,7 @@
 #include <fstream>
 #include <iomanip>
 #include <sstream>
+#include <tuple>
 #include <unistd.h>
 
 using namespace FuzzyContact;
@@ -252,6 +254,11 @@ INSTANTIATE_TEST_SUITE_P(
              "set face = tip",
              "Component beam, load tip: face: <tip> is not a face of a "
              "rectangular component"},
+    BadInput{"pressure_and_total_force",
+             "set direction   = 0, -1",
+             "set direction = 0, -1\n    set pressure = 1e6",
+             "Component beam, load tip: set either total force or pressure, "
+             "not both."},
     BadInput{"zero_load_direction",
              "set direction   = 0, -1",
              "set direction = 0, 0",
@@ -1009,6 +1016,183 @@ TEST(MeshFiles, ReadRectanglesSolveLikeGeneratedOnes)
 }
 
 
+namespace
+{
+  // The stacked scene with P2 read from the Abaqus file @p file (of the
+  // same cells as the rectangle), with @p extra for P2.
+  std::string
+  abaqus_scene(const std::string &file, const std::string &extra = "")
+  {
+    std::string       text = stacked_scene(false, extra);
+    const std::string rectangle =
+      "  set lower left corner = 0.1, -0.01\n  set upper right corner = 0.5, "
+      "0.01\n  set subdivisions = 8, 2\n";
+    text.replace(text.find(rectangle),
+                 rectangle.size(),
+                 "  set mesh file = " + file + "\n");
+    return text;
+  }
+
+  // P2 in two zones, steel (x < 0.3) and a softer bronze; with @p ranges
+  // for a rectangle, without for a mesh file (its element sets).
+  std::string
+  two_zones(const bool ranges)
+  {
+    return std::string("  set zones = steel, bronze\n  subsection Zone "
+                       "steel\n") +
+           (ranges ? "    set x range = 0.1, 0.3\n" : "") +
+           "    set E = 210e9\n  end\n  subsection Zone bronze\n" +
+           (ranges ? "    set x range = 0.3, 0.5\n" : "") +
+           "    set E = 110e9\n  end\n";
+  }
+
+  // Normal and tangential contact force of the full-order solve.
+  std::array<double, 2>
+  contact_forces(const Scene &scene, const unsigned int refinements)
+  {
+    ContactScene   bodies(scene, refinements);
+    FullOrderModel full(bodies, ObservedDofs(2));
+    full.set_state(SceneState(scene));
+    const ContactSolution s = full.solve();
+    return {{s.normal_force, s.tangential_force}};
+  }
+} // namespace
+
+
+// P2 read from tests/meshes/stacked-p2.inp (an Abaqus file in the style of
+// Abaqus/CAE: surfaces by element sets and by elements, internal sets,
+// sections, materials and a step, all but the mesh and the names ignored)
+// solves like the generated rectangle of the same cells, with one zone and
+// with the file's element sets steel and bronze as zones of different
+// moduli against the rectangle's x ranges. deal.II's reader rounds the
+// coordinates to 9 digits; they are restored to the file's.
+TEST(MeshFiles, AbaqusBlockSolvesLikeTheGeneratedRectangle)
+{
+  const std::string inp      = source_dir + "/tests/meshes/stacked-p2.inp";
+  double            one_zone = 0;
+  {
+    const MeshFolder folder;
+    folder.write("digits.inp",
+                 replace(Input::read_text_file(inp),
+                         "14, 0.30000000000000004, 0\n",
+                         "14, 0.30000000123456789, 9.8765432109876e-10\n"));
+    const MeshFileInfo info =
+      read_mesh_file((folder.path / "digits.inp").string(), 1, "test");
+    Triangulation<2> triangulation;
+    create_mesh(info, 1, triangulation, "test");
+    const Point<2> node(0.30000000123456789, 9.8765432109876e-10);
+    double         nearest = 1;
+    for (const Point<2> &v : triangulation.get_vertices())
+      nearest = std::min(nearest, v.distance(node));
+    EXPECT_LT(nearest, 1e-17);
+  }
+  for (const bool zones : {false, true})
+    {
+      const Scene generated =
+        Scene::read_from_string(stacked_scene(false, two_zones(true)));
+      const Scene read =
+        Scene::read_from_string(abaqus_scene(inp, two_zones(false)));
+      const Scene generated_one = Scene::read_from_string(stacked_scene(false));
+      const Scene read_one      = Scene::read_from_string(abaqus_scene(inp));
+      const ComponentDescription &p2 = (zones ? read : read_one).components[1];
+      EXPECT_FALSE(p2.is_rectangle());
+      EXPECT_EQ(p2.mesh.face_names(), "bottom, left, right, top");
+      EXPECT_EQ(p2.mesh.zone_names(), "bronze, steel");
+      EXPECT_NEAR(p2.upper_right[0], 0.5, 1e-15);
+      EXPECT_NEAR(p2.lower_left[1], -0.01, 1e-15);
+      for (const unsigned int r : {0u, 1u})
+        {
+          const auto a = contact_forces(zones ? generated : generated_one, r);
+          const auto b = contact_forces(zones ? read : read_one, r);
+          EXPECT_GT(a[0], 1e3);
+          EXPECT_NEAR(b[0], a[0], 1e-10 * a[0]) << "refinements " << r;
+          EXPECT_NEAR(b[1], a[1], 1e-10 * a[0]) << "refinements " << r;
+          if (!zones && r == 0)
+            one_zone = a[0];
+          else if (r == 0) // the softer bronze changes the answer
+            {
+              EXPECT_GT(std::abs(a[0] - one_zone), 1e-3 * one_zone);
+            }
+        }
+    }
+}
+
+
+// An Abaqus file's bad names and elements are refused naming the file and
+// the key: an unknown surface or element set (listing those it has), a
+// zone list that misses a set, triangles, elements not numbered 1, 2, ...,
+// element sets that share an element, a missing file.
+TEST(MeshFiles, BadAbaqusFilesAreRefusedWithTheFileAndTheKey)
+{
+  const MeshFolder  folder;
+  const std::string good =
+    Input::read_text_file(source_dir + "/tests/meshes/stacked-p2.inp");
+  folder.write("p2.inp", good);
+  const auto message = [&](const std::string &text) {
+    return message_of_reading(folder, text);
+  };
+  std::string m = message(replace(abaqus_scene("p2.inp"),
+                                  "set clamped faces = right",
+                                  "set clamped faces = rim"));
+  EXPECT_NE(m.find("Component P2: clamped faces: <"), std::string::npos) << m;
+  EXPECT_NE(m.find("p2.inp> has no surface called <rim>; it has: bottom, "
+                   "left, right, top."),
+            std::string::npos)
+    << m;
+
+  m = message(abaqus_scene(
+    "p2.inp",
+    replace(replace(two_zones(false), "bronze", "brass"), "bronze", "brass")));
+  EXPECT_NE(m.find("Component P2, zone brass: <"), std::string::npos) << m;
+  EXPECT_NE(m.find("has no element set called <brass>; it has: bronze, "
+                   "steel."),
+            std::string::npos)
+    << m;
+
+  const std::string steel_only =
+    "  set zones = steel\n  subsection Zone steel\n  end\n";
+  try
+    {
+      const Scene  scene = folder.read(abaqus_scene("p2.inp", steel_only));
+      ContactScene bodies(scene, 0);
+      ADD_FAILURE() << "a zone list without bronze was accepted";
+    }
+  catch (const dealii::ExceptionBase &e)
+    {
+      m = Input::message_of(e);
+      EXPECT_NE(m.find("(0.325, -0.005) of <"), std::string::npos) << m;
+      EXPECT_NE(m.find("lies in no zone the component lists (element set "
+                       "id 2, 0: in no element set); list every element set "
+                       "of the file in 'zones' (it has: bronze, steel)"),
+                std::string::npos)
+        << m;
+    }
+
+  const auto with_file = [&](const std::string &from, const std::string &to) {
+    folder.write("bad.inp", replace(good, from, to));
+    return message(abaqus_scene("bad.inp"));
+  };
+  m = with_file("1, 1, 2, 11, 10\n", "1, 1, 2, 11\n");
+  EXPECT_NE(m.find("Component P2: mesh file: <"), std::string::npos) << m;
+  EXPECT_NE(m.find("bad.inp>: element 1 is a triangle"), std::string::npos)
+    << m;
+  EXPECT_NE(m.find("Quad"), std::string::npos) << m;
+
+  m = with_file("1, 1, 2, 11, 10\n", "17, 1, 2, 11, 10\n");
+  EXPECT_NE(m.find("element 17 should be numbered 1"), std::string::npos) << m;
+
+  m = with_file("1, 2, 3, 4, 9,", "1, 2, 3, 4, 5, 9,");
+  EXPECT_NE(m.find("the element sets <steel> and <bronze> share element 5"),
+            std::string::npos)
+    << m;
+
+  m = message(abaqus_scene("nowhere.inp"));
+  EXPECT_NE(m.find("Component P2: mesh file: <"), std::string::npos) << m;
+  EXPECT_NE(m.find("nowhere.inp> is not a file that exists"), std::string::npos)
+    << m;
+}
+
+
 // Unknown names, triangles, inverted cells, a missing file and zones the
 // file does not have are refused, naming the file and the key.
 TEST(MeshFiles, BadMeshesAreRefusedWithTheFileAndTheKey)
@@ -1373,5 +1557,80 @@ TEST(Validation, CattaneoMindlinStickZone)
       EXPECT_NEAR(stick.half_width, c, 2 * stick.node_spacing)
         << "u_x = " << shift << ", Q/(mu P) = " << ratio;
       EXPECT_NEAR(stick.centre, 0., 2 * stick.node_spacing) << shift;
+    }
+}
+
+// The contact patch test (prm/patch-test.prm, doc/validation.md): two
+// blocks of one material under a uniform compression, whose exact solution
+// is a uniform pressure p = E delta / ((1 - nu^2) H) (plane strain) and a
+// linear displacement field. On matching meshes node-to-segment contact
+// passes it to round-off; on non-matching meshes (the slave face finer,
+// then coarser) it does not, and the errors stay below the bounds measured
+// by build/patch_test (with a margin). Force balance holds to round-off on
+// every mesh: the supports' reactions equal the contact force and every
+// free DoF is in equilibrium.
+TEST(Validation, ContactPatchTest)
+{
+  const Scene scene     = Scene::read(source_dir + "/prm/patch-test.prm");
+  const auto  errors_of = [&](const unsigned int slave_cells,
+                             const unsigned int master_cells) {
+    Scene s                         = scene;
+    s.components[0].subdivisions[0] = slave_cells;
+    s.components[1].subdivisions[0] = master_cells;
+    ContactScene   bodies(s, 0);
+    FullOrderModel full(bodies, ObservedDofs(2));
+    full.set_state(SceneState(s));
+    const ContactSolution solution = full.solve();
+    const auto           &upper    = s.components[0];
+    return PatchTest::measure(bodies.components(),
+                              bodies.interface(),
+                              solution,
+                              {s.plane_model,
+                               upper.zones[0].youngs_modulus,
+                               upper.zones[0].poissons_ratio,
+                               upper.upper_right[1] -
+                                 s.components[1].lower_left[1],
+                               -upper.supports[0].displacement[1]});
+  };
+  // p = 210e9 / (1 - 0.09) * 1e-5 / 0.1, computed by hand.
+  const PatchTest::UniaxialCompression exact{PlaneModel::plane_strain,
+                                             210e9,
+                                             0.3,
+                                             0.1,
+                                             1e-5};
+  EXPECT_NEAR(exact.pressure(), 2.3076923076923077e7, 1e-6);
+
+  const PatchTest::Errors matching = errors_of(5, 5);
+  EXPECT_EQ(matching.n_closed, matching.n_slave_nodes);
+  EXPECT_LT(matching.max_pressure_error, 1e-9);
+  EXPECT_LT(matching.max_displacement_error, 1e-9);
+  EXPECT_NEAR(matching.contact_force,
+              matching.exact_force,
+              1e-9 * matching.exact_force);
+  // Measured (build/patch_test, Q2 at the scene's mesh): slave finer 7:5,
+  // pressure 5.48e-2, displacement 8.47e-3, force -2.92e-4; slave coarser
+  // 5:7, 0.224, 2.64e-2, -4.96e-3. The bounds leave 10 to 40 %: a change
+  // of the contact discretisation that makes it worse fails.
+  const std::tuple<unsigned int, unsigned int, double, double, double>
+    non_matching[] = {{7, 5, 0.06, 0.01, 4e-4}, {5, 7, 0.25, 0.03, 6e-3}};
+  for (const auto &[slave, master, pressure, displacement, force] :
+       non_matching)
+    {
+      const PatchTest::Errors e = errors_of(slave, master);
+      SCOPED_TRACE(std::to_string(slave) + ":" + std::to_string(master));
+      EXPECT_EQ(e.n_closed, e.n_slave_nodes);
+      EXPECT_GT(e.max_pressure_error, 1e-3); // it does not pass exactly
+      EXPECT_LT(e.max_pressure_error, pressure);
+      EXPECT_LT(e.max_displacement_error, displacement);
+      EXPECT_NEAR(e.contact_force, e.exact_force, force * e.exact_force);
+    }
+  for (const PatchTest::Errors &e :
+       {matching, errors_of(7, 5), errors_of(5, 7)})
+    {
+      EXPECT_LT(e.reaction_balance, 1e-10);
+      EXPECT_LT(e.equilibrium_residual, 1e-10);
+      ASSERT_EQ(e.reactions.size(), 2u);
+      EXPECT_LT(e.reactions[0], 0.); // the press pushes the upper block down
+      EXPECT_GT(e.reactions[1], 0.); // the base holds the lower block up
     }
 }

@@ -213,10 +213,11 @@ namespace FuzzyContact
             message << "Component " << name() << ": the cell centred at ("
                     << cell->center()[0] << ", " << cell->center()[1]
                     << ") of <" << d.mesh_file
-                    << "> lies in no zone the component lists (physical "
-                       "surface tag "
-                    << cell->material_id() << "); list every physical "
-                    << "surface of the file in 'zones' (it has: "
+                    << "> lies in no zone the component lists ("
+                    << d.mesh.zone_kind() << " id " << cell->material_id()
+                    << (d.mesh.abaqus ? ", 0: in no element set" : "")
+                    << "); list every " << d.mesh.zone_kind()
+                    << " of the file in 'zones' (it has: "
                     << d.mesh.zone_names() << "), or none.";
             AssertThrow(false, ExcMessage(message.str()));
           }

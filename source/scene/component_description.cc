@@ -83,8 +83,8 @@ namespace FuzzyContact
       return static_cast<types::boundary_id>(face_from_string(face, what));
     const auto id = mesh.boundary_ids.find(Utilities::trim(face));
     AssertThrow(id != mesh.boundary_ids.end(),
-                ExcMessage(what + ": <" + mesh.file +
-                           "> has no physical curve called <" +
+                ExcMessage(what + ": <" + mesh.file + "> has no " +
+                           mesh.face_kind() + " called <" +
                            Utilities::trim(face) +
                            ">; it has: " + mesh.face_names() + "."));
     return id->second;

@@ -1,4 +1,5 @@
 #include <fuzzycontact/base/input.h>
+#include <fuzzycontact/scene/abaqus_file.h>
 #include <fuzzycontact/scene/mesh_file.h>
 
 #include <deal.II/base/exceptions.h>
@@ -142,7 +143,13 @@ namespace FuzzyContact
           GridIn<2> grid_in;
           grid_in.attach_triangulation(triangulation);
           std::istringstream in(info.msh_text);
-          grid_in.read_msh(in);
+          if (info.abaqus)
+            {
+              grid_in.read_abaqus(in);
+              restore_node_coordinates(info.msh_text, triangulation);
+            }
+          else
+            grid_in.read_msh(in);
         }
       catch (const ExceptionBase &e)
         {
@@ -151,7 +158,7 @@ namespace FuzzyContact
                                  Utilities::trim(Input::message_of(e)) +
                                  "). FuzzyContact reads first-order "
                                  "quadrilateral meshes in Gmsh's ASCII "
-                                 "format 2 or 4."));
+                                 "format 2 or 4 and Abaqus input files."));
         }
       AssertThrow(triangulation.all_reference_cells_are_hyper_cube(),
                   ExcMessage(file +
@@ -294,6 +301,20 @@ namespace FuzzyContact
   }
 
 
+  std::string
+  MeshFileInfo::face_kind() const
+  {
+    return abaqus ? "surface" : "physical curve";
+  }
+
+
+  std::string
+  MeshFileInfo::zone_kind() const
+  {
+    return abaqus ? "element set" : "physical surface";
+  }
+
+
   MeshFileInfo
   read_mesh_file(const std::string &file,
                  const double       scale,
@@ -306,11 +327,22 @@ namespace FuzzyContact
     MeshFileInfo info;
     info.file             = file;
     const std::string ext = extension_of(file);
-    AssertThrow(ext == ".msh" || ext == ".geo",
+    AssertThrow(ext == ".msh" || ext == ".geo" || ext == ".inp",
                 ExcMessage(where + ": <" + file +
-                           ">: FuzzyContact reads Gmsh meshes (.msh) and "
-                           "Gmsh geometries (.geo); convert other formats "
-                           "with gmsh (e.g. 'gmsh -2 -format msh41 file')."));
+                           ">: FuzzyContact reads Gmsh meshes (.msh), Gmsh "
+                           "geometries (.geo) and Abaqus input files (.inp); "
+                           "convert other formats with gmsh (e.g. 'gmsh -2 "
+                           "-format msh41 file')."));
+    Triangulation<2> triangulation;
+    if (ext == ".inp")
+      {
+        info.abaqus = true;
+        info.msh_text =
+          abaqus_grid_in_text(Input::read_text_file(file), info, where);
+        read_triangulation(info, scale, triangulation, where);
+        measure(info, triangulation);
+        return info;
+      }
     if (ext == ".geo")
       {
         Input::read_text_file(file); // names the file if it is unreadable
@@ -336,8 +368,6 @@ namespace FuzzyContact
                            "clamped, loaded or put in contact; add "
                            "'Physical Curve(\"name\") = {...};' for each face "
                            "the scene uses."));
-
-    Triangulation<2> triangulation;
     read_triangulation(info, scale, triangulation, where);
     measure(info, triangulation);
     return info;

@@ -85,8 +85,9 @@ namespace FuzzyContact
                 const auto id = component.mesh.material_ids.find(zone.name);
                 AssertThrow(id != component.mesh.material_ids.end(),
                             ExcMessage(zwhere + ": <" + component.mesh.file +
-                                       "> has no physical surface called <" +
-                                       zone.name + ">; it has: " +
+                                       "> has no " +
+                                       component.mesh.zone_kind() +
+                                       " called <" + zone.name + ">; it has: " +
                                        component.mesh.zone_names() + "."));
                 zone.material_id = id->second;
               }

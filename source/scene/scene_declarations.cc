@@ -119,9 +119,9 @@ namespace FuzzyContact
       prm.declare_entry("mesh file",
                         "",
                         Patterns::Anything(),
-                        "A Gmsh mesh (.msh) or geometry (.geo), relative to "
-                        "the scene file; empty: a rectangle (corners and "
-                        "subdivisions).");
+                        "A Gmsh mesh (.msh) or geometry (.geo) or an Abaqus "
+                        "input file (.inp), relative to the scene file; "
+                        "empty: a rectangle (corners and subdivisions).");
       prm.declare_entry("scale",
                         "1",
                         Patterns::Double(),

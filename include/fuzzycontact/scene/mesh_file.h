@@ -1,10 +1,11 @@
 // A component meshed outside FuzzyContact: a Gmsh mesh (.msh, ASCII format
-// 2 or 4) or a Gmsh geometry (.geo, meshed here by the gmsh program that
-// comes with deal.II).
+// 2 or 4), a Gmsh geometry (.geo, meshed here by the gmsh program that
+// comes with deal.II) or an Abaqus input file (.inp, abaqus_file.h).
 //
 // The names of the file's physical groups are what a scene file uses:
 // physical curves are faces (clamps, supports, loads, contact faces),
-// physical surfaces are material zones. read_mesh_file() reads the file once
+// physical surfaces are material zones; in an Abaqus file, surfaces are
+// faces and element sets zones. read_mesh_file() reads the file once
 // when the scene is read, so that an unknown name, a triangle, an inverted
 // cell or a file that cannot be read is refused before any computing;
 // create_mesh() builds the deal.II triangulation from what it kept.
@@ -37,8 +38,12 @@ namespace FuzzyContact
   {
     /** The file as the scene names it, resolved to a path. */
     std::string file;
-    /** The Gmsh ASCII text of the mesh (a .geo file: as meshed by gmsh). */
+    /**
+     * The text deal.II's GridIn reads: Gmsh ASCII (a .geo file: as meshed
+     * by gmsh), or for an Abaqus file the text abaqus_grid_in_text() made.
+     */
     std::string msh_text;
+    bool        abaqus = false;
     /** Physical curves (faces) and surfaces (zones) by name. */
     std::map<std::string, types::boundary_id> boundary_ids;
     std::map<std::string, types::material_id> material_ids;
@@ -66,15 +71,22 @@ namespace FuzzyContact
     face_names() const;
     std::string
     zone_names() const;
+    /** What the file calls a face ("physical curve" or "surface") and a
+     * zone ("physical surface" or "element set"). */
+    std::string
+    face_kind() const;
+    std::string
+    zone_kind() const;
   };
 
   /**
-   * Reads and checks the mesh file @p file (.msh or .geo), with the mesh's
-   * coordinates multiplied by @p scale. @p where names the key that gave
+   * Reads and checks the mesh file @p file (.msh, .geo or .inp), with the
+   * mesh's coordinates multiplied by @p scale. @p where names the key that gave
    * the file ("Component Roller: mesh file"). Throws a message naming the
    * file for a file that cannot be read or meshed, a binary .msh, a mesh
    * with triangles (saying how to recombine it), an inverted or degenerate
-   * cell, and a mesh without physical curves.
+   * cell, and a mesh without physical curves (Abaqus: without surfaces;
+   * see abaqus_grid_in_text() for its own checks).
    */
   MeshFileInfo
   read_mesh_file(const std::string &file,
@@ -83,8 +95,8 @@ namespace FuzzyContact
 
   /**
    * Builds the triangulation of @p info (coordinates times @p scale), with
-   * the physical curve tags as boundary ids, the physical surface tags as
-   * material ids, and exact manifolds on the circular arcs.
+   * the ids of info.boundary_ids and info.material_ids, and exact
+   * manifolds on the circular arcs.
    */
   void
   create_mesh(const MeshFileInfo &info,
