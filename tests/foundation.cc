@@ -302,7 +302,14 @@ INSTANTIATE_TEST_SUITE_P(
     BadInput{"duplicate_names",
              "  set loads              = tip",
              "  set loads = tip, tip",
-             "Component beam: loads: the name <tip> appears twice"}),
+             "Component beam: loads: the name <tip> appears twice"},
+    BadInput{"support_without_effect",
+             "  set clamped faces      = left",
+             "  set clamped faces = left\n  set supports = again\n"
+             "  subsection Support again\n    set face = left\n"
+             "    set fixed components = y\n  end",
+             "Component beam, support again: the supports listed before it "
+             "already hold every DoF it fixes on the face 'left'"}),
   [](const ::testing::TestParamInfo<BadInput> &info) {
     return info.param.name;
   });

@@ -341,14 +341,27 @@ namespace FuzzyContact
           ComponentMask(std::vector<bool>{support.fixed[0], support.fixed[1]}));
         const double   magnitude = support.displacement.norm();
         Vector<double> field(magnitude > 0 ? dof_handler_.n_dofs() : 0);
+        unsigned int   n_held = 0;
         for (const auto &[dof, value] : held)
           if (!constraints_.is_constrained(dof))
             {
               constraints_.add_line(dof);
+              ++n_held;
               if (magnitude > 0)
                 field[dof] =
                   support.displacement[dof_directions_[dof]] / magnitude;
             }
+        // Sharing a few nodes (corners) is fine; a support that holds
+        // nothing would be silently ignored.
+        AssertThrow(n_held > 0,
+                    ExcMessage(where +
+                               ": the supports listed before it "
+                               "already hold every DoF it fixes on "
+                               "the face '" +
+                               support.face +
+                               "', so it would have no effect (nor its "
+                               "displacement): fix other components, "
+                               "another face, or remove it."));
         if (magnitude > 0)
           {
             for (unsigned int i = 0; i < field.size(); ++i)
