@@ -65,6 +65,27 @@ add_test(NAME step-4.hertz
     -DJSON_CHECKS=${CMAKE_CURRENT_SOURCE_DIR}/check_step-4_hertz.cmake
     -P ${CMAKE_CURRENT_SOURCE_DIR}/run_program.cmake)
 
+# step-4 on a load history: prm/step-4-cattaneo-mindlin.prm (two stages,
+# partial slip; every model solves stage by stage), 3 alpha levels, 3
+# points per parameter in the Extension Principle.
+add_test(NAME step-4.load_stages
+  COMMAND ${CMAKE_COMMAND}
+    -DPROGRAM=$<TARGET_FILE:step-4>
+    -DPRM=${CMAKE_SOURCE_DIR}/prm/step-4-cattaneo-mindlin.prm
+    -DSCENE=${CMAKE_SOURCE_DIR}/prm/cattaneo-mindlin.prm
+    -DEXTRA_FILES=${CMAKE_SOURCE_DIR}/prm/meshes
+    -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/work/step-4.load_stages
+    -DOUTPUT=step-4-cattaneo-mindlin-output
+    "-DEDIT_FILE=step"
+    "-DEDIT_FROM=set number of alpha levels = 11"
+    "-DEDIT_TO=set number of alpha levels = 3"
+    "-DEDIT2_FILE=step"
+    "-DEDIT2_FROM=set points per dimension = 4"
+    "-DEDIT2_TO=set points per dimension = 3"
+    -DEXPECT=success
+    -DJSON_CHECKS=${CMAKE_CURRENT_SOURCE_DIR}/check_step-4_cattaneo_mindlin.cmake
+    -P ${CMAKE_CURRENT_SOURCE_DIR}/run_program.cmake)
+
 # Kinked responses (prm/step-4-kinked.prm on coarse meshes): friction that
 # reverses inside the range of the load and a gap that opens the contact,
 # against a dense Extension Principle (20 points per parameter, 6 levels,
