@@ -84,6 +84,15 @@ namespace FuzzyContact
                << state.load_forces[c][l] << " m";
     if (text.str().empty() || load != 0)
       text << (text.str().empty() ? "" : ", ") << "F = " << load << " N";
+    // A load history replaces the proportional load steps.
+    if (!s.load_stages.empty())
+      {
+        text << " in stages";
+        for (const LoadStage &stage : s.load_stages)
+          text << (&stage == &s.load_stages.front() ? " " : ", ") << stage.name
+               << " (" << stage.n_load_steps << " step"
+               << (stage.n_load_steps > 1 ? "s" : "") << ")";
+      }
     loading = text.str();
   }
 
@@ -160,9 +169,18 @@ namespace FuzzyContact
     {
       const SolverRun   &ref = c.runs[0];
       std::ostringstream out;
+      // One figure when the components have one size, else each.
+      std::string dofs = std::to_string(c.n_dofs[0]);
+      const bool  same =
+        std::all_of(c.n_dofs.begin(), c.n_dofs.end(), [&](const auto n) {
+          return n == c.n_dofs[0];
+        });
+      for (unsigned int k = 1; k < c.n_dofs.size() && !same; ++k)
+        dofs += "/" + std::to_string(c.n_dofs[k]);
       out << "\nCase " << c.scene << " (" << to_string(c.plane_model) << "), "
-          << c.loading << ", mu = " << c.friction_label() << "; " << c.n_dofs[0]
-          << " DoFs per component, " << c.n_nodes << " slave nodes\n";
+          << c.loading << ", mu = " << c.friction_label() << "; " << dofs
+          << (same ? " DoFs per component, " : " DoFs (the components), ")
+          << c.n_nodes << " slave nodes\n";
       out << " solver              ";
       for (unsigned int k = 0; k < n_shown; ++k)
         out << std::setw(width(o[k])) << o[k].name;

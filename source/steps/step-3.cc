@@ -112,7 +112,8 @@ namespace Step3
       prm.declare_entry("load steps",
                         "1",
                         Patterns::Integer(),
-                        "Proportional load steps.");
+                        "Proportional load steps (a scene with load stages "
+                        "uses its stages' own).");
       prm.declare_entry("penetration tolerance",
                         "1e-8",
                         Patterns::Double(),
