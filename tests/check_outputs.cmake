@@ -23,3 +23,15 @@ function(check_outputs expected tolerances)
     message(STATUS "${name}: largest relative difference ${error}")
   endforeach()
 endfunction()
+
+# check_support_is_interval(<k>): output k's support (alpha = 0) is a
+# proper interval: the fuzzy parameters move it.
+function(check_support_is_interval k)
+  string(JSON name GET "${RESULTS_JSON}" outputs ${k} name)
+  string(JSON lower GET "${RESULTS_JSON}" outputs ${k} lower 0)
+  string(JSON upper GET "${RESULTS_JSON}" outputs ${k} upper 0)
+  if(NOT upper GREATER lower)
+    message(FATAL_ERROR "${name} support [${lower}, ${upper}] is not an interval")
+  endif()
+  message(STATUS "${name} at alpha 0: [${lower}, ${upper}]")
+endfunction()

@@ -10,9 +10,4 @@ include(${CMAKE_CURRENT_LIST_DIR}/check_outputs.cmake)
 check_outputs("${expected}" "${tolerances}")
 # The tangential force's support at alpha = 0 is a proper interval: the
 # sideways displacement and the friction coefficient move it.
-string(JSON Ft_lower GET "${RESULTS_JSON}" outputs 1 lower 0)
-string(JSON Ft_upper GET "${RESULTS_JSON}" outputs 1 upper 0)
-if(NOT Ft_upper GREATER Ft_lower)
-  message(FATAL_ERROR "Ft support [${Ft_lower}, ${Ft_upper}] is not an interval")
-endif()
-message(STATUS "Ft at alpha 0: [${Ft_lower}, ${Ft_upper}]")
+check_support_is_interval(1)

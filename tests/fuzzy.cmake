@@ -21,97 +21,83 @@ fuzzycontact_program_test(step-4.quick_run step-4 overlap
   -DEXPECT=success
   -DJSON_CHECKS=${CMAKE_CURRENT_SOURCE_DIR}/check_step-4.cmake)
 
+# step4_study_test(<name> <study prm> <scene prm> <output folder> <check
+# script> [run_program.cmake arguments...]): step-4 on prm/<study prm> in a
+# folder of its own, with the edits and extra files given, and its
+# results.json checked by tests/<check script>.
+function(step4_study_test name study scene output checks)
+  add_test(NAME ${name}
+    COMMAND ${CMAKE_COMMAND}
+      -DPROGRAM=$<TARGET_FILE:step-4>
+      -DPRM=${CMAKE_SOURCE_DIR}/prm/${study}
+      -DSCENE=${CMAKE_SOURCE_DIR}/prm/${scene}
+      -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/work/${name}
+      -DOUTPUT=${output}
+      ${ARGN}
+      -DEXPECT=success
+      -DJSON_CHECKS=${CMAKE_CURRENT_SOURCE_DIR}/${checks}
+      -P ${CMAKE_CURRENT_SOURCE_DIR}/run_program.cmake)
+endfunction()
+
 # Two contact pairs of different friction, a fuzzy modulus and a fuzzy load
 # on the upper beam (beside the middle beam's load), per-pair outputs: the
 # exact reference keeps each pair's friction coefficient.
-add_test(NAME step-4.three_beams
-  COMMAND ${CMAKE_COMMAND}
-    -DPROGRAM=$<TARGET_FILE:step-4>
-    -DPRM=${CMAKE_SOURCE_DIR}/prm/step-4-three-beams.prm
-    -DSCENE=${CMAKE_SOURCE_DIR}/prm/three-beams.prm
-    -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/work/step-4.three_beams
-    -DOUTPUT=step-4-three-beams-output
-    "-DEDIT_FILE=step"
-    "-DEDIT_FROM=set mesh refinements       = 2"
-    "-DEDIT_TO=set mesh refinements       = 0"
-    "-DEDIT2_FILE=step"
-    "-DEDIT2_FROM=set number of alpha levels = 6"
-    "-DEDIT2_TO=set number of alpha levels = 3"
-    "-DEDIT3_FILE=step"
-    "-DEDIT3_FROM=set points per dimension = 4"
-    "-DEDIT3_TO=set points per dimension = 3"
-    -DEXPECT=success
-    -DJSON_CHECKS=${CMAKE_CURRENT_SOURCE_DIR}/check_step-4_three_beams.cmake
-    -P ${CMAKE_CURRENT_SOURCE_DIR}/run_program.cmake)
+step4_study_test(step-4.three_beams step-4-three-beams.prm three-beams.prm
+  step-4-three-beams-output check_step-4_three_beams.cmake
+  "-DEDIT_FILE=step"
+  "-DEDIT_FROM=set mesh refinements       = 2"
+  "-DEDIT_TO=set mesh refinements       = 0"
+  "-DEDIT2_FILE=step"
+  "-DEDIT2_FROM=set number of alpha levels = 6"
+  "-DEDIT2_TO=set number of alpha levels = 3"
+  "-DEDIT3_FILE=step"
+  "-DEDIT3_FROM=set points per dimension = 4"
+  "-DEDIT3_TO=set points per dimension = 3")
 
 # step-4 on the user's own meshes: prm/step-4-hertz.prm (Gmsh geometries,
 # curved contact, prescribed displacement), 3 alpha levels, 3 points per
 # parameter in the Extension Principle.
-add_test(NAME step-4.hertz
-  COMMAND ${CMAKE_COMMAND}
-    -DPROGRAM=$<TARGET_FILE:step-4>
-    -DPRM=${CMAKE_SOURCE_DIR}/prm/step-4-hertz.prm
-    -DSCENE=${CMAKE_SOURCE_DIR}/prm/hertz.prm
-    -DEXTRA_FILES=${CMAKE_SOURCE_DIR}/prm/meshes
-    -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/work/step-4.hertz
-    -DOUTPUT=step-4-hertz-output
-    "-DEDIT_FILE=step"
-    "-DEDIT_FROM=set number of alpha levels = 11"
-    "-DEDIT_TO=set number of alpha levels = 3"
-    "-DEDIT2_FILE=step"
-    "-DEDIT2_FROM=set points per dimension = 4"
-    "-DEDIT2_TO=set points per dimension = 3"
-    -DEXPECT=success
-    -DJSON_CHECKS=${CMAKE_CURRENT_SOURCE_DIR}/check_step-4_hertz.cmake
-    -P ${CMAKE_CURRENT_SOURCE_DIR}/run_program.cmake)
+step4_study_test(step-4.hertz step-4-hertz.prm hertz.prm
+  step-4-hertz-output check_step-4_hertz.cmake
+  -DEXTRA_FILES=${CMAKE_SOURCE_DIR}/prm/meshes
+  "-DEDIT_FILE=step"
+  "-DEDIT_FROM=set number of alpha levels = 11"
+  "-DEDIT_TO=set number of alpha levels = 3"
+  "-DEDIT2_FILE=step"
+  "-DEDIT2_FROM=set points per dimension = 4"
+  "-DEDIT2_TO=set points per dimension = 3")
 
 # step-4 on a load history: prm/step-4-cattaneo-mindlin.prm (two stages,
 # partial slip; every model solves stage by stage), 3 alpha levels, 3
 # points per parameter in the Extension Principle.
-add_test(NAME step-4.load_stages
-  COMMAND ${CMAKE_COMMAND}
-    -DPROGRAM=$<TARGET_FILE:step-4>
-    -DPRM=${CMAKE_SOURCE_DIR}/prm/step-4-cattaneo-mindlin.prm
-    -DSCENE=${CMAKE_SOURCE_DIR}/prm/cattaneo-mindlin.prm
-    -DEXTRA_FILES=${CMAKE_SOURCE_DIR}/prm/meshes
-    -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/work/step-4.load_stages
-    -DOUTPUT=step-4-cattaneo-mindlin-output
-    "-DEDIT_FILE=step"
-    "-DEDIT_FROM=set number of alpha levels = 11"
-    "-DEDIT_TO=set number of alpha levels = 3"
-    "-DEDIT2_FILE=step"
-    "-DEDIT2_FROM=set points per dimension = 4"
-    "-DEDIT2_TO=set points per dimension = 3"
-    -DEXPECT=success
-    -DJSON_CHECKS=${CMAKE_CURRENT_SOURCE_DIR}/check_step-4_cattaneo_mindlin.cmake
-    -P ${CMAKE_CURRENT_SOURCE_DIR}/run_program.cmake)
+step4_study_test(step-4.load_stages step-4-cattaneo-mindlin.prm cattaneo-mindlin.prm
+  step-4-cattaneo-mindlin-output check_step-4_cattaneo_mindlin.cmake
+  -DEXTRA_FILES=${CMAKE_SOURCE_DIR}/prm/meshes
+  "-DEDIT_FILE=step"
+  "-DEDIT_FROM=set number of alpha levels = 11"
+  "-DEDIT_TO=set number of alpha levels = 3"
+  "-DEDIT2_FILE=step"
+  "-DEDIT2_FROM=set points per dimension = 4"
+  "-DEDIT2_TO=set points per dimension = 3")
 
 # Kinked responses (prm/step-4-kinked.prm on coarse meshes): friction that
 # reverses inside the range of the load and a gap that opens the contact,
 # against a dense Extension Principle (20 points per parameter, 6 levels,
 # reused factorisations: exact for a body's modulus, loads and gaps).
-add_test(NAME step-4.kinked
-  COMMAND ${CMAKE_COMMAND}
-    -DPROGRAM=$<TARGET_FILE:step-4>
-    -DPRM=${CMAKE_SOURCE_DIR}/prm/step-4-kinked.prm
-    -DSCENE=${CMAKE_SOURCE_DIR}/prm/kinked.prm
-    -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/work/step-4.kinked
-    -DOUTPUT=step-4-kinked-output
-    "-DEDIT_FILE=step"
-    "-DEDIT_FROM=set mesh refinements       = 2"
-    "-DEDIT_TO=set mesh refinements       = 0"
-    "-DEDIT2_FILE=step"
-    "-DEDIT2_FROM=set points per dimension = 4"
-    "-DEDIT2_TO=set points per dimension = 20"
-    "-DEDIT3_FILE=step"
-    "-DEDIT3_FROM=set reuse factorisations = false"
-    "-DEDIT3_TO=set reuse factorisations = true"
-    "-DEDIT4_FILE=step"
-    "-DEDIT4_FROM=set number of alpha levels = 11"
-    "-DEDIT4_TO=set number of alpha levels = 6"
-    -DEXPECT=success
-    -DJSON_CHECKS=${CMAKE_CURRENT_SOURCE_DIR}/check_step-4_kinked.cmake
-    -P ${CMAKE_CURRENT_SOURCE_DIR}/run_program.cmake)
+step4_study_test(step-4.kinked step-4-kinked.prm kinked.prm
+  step-4-kinked-output check_step-4_kinked.cmake
+  "-DEDIT_FILE=step"
+  "-DEDIT_FROM=set mesh refinements       = 2"
+  "-DEDIT_TO=set mesh refinements       = 0"
+  "-DEDIT2_FILE=step"
+  "-DEDIT2_FROM=set points per dimension = 4"
+  "-DEDIT2_TO=set points per dimension = 20"
+  "-DEDIT3_FILE=step"
+  "-DEDIT3_FROM=set reuse factorisations = false"
+  "-DEDIT3_TO=set reuse factorisations = true"
+  "-DEDIT4_FILE=step"
+  "-DEDIT4_FROM=set number of alpha levels = 11"
+  "-DEDIT4_TO=set number of alpha levels = 6")
 
 # Two MPI processes give the same bounds as one.
 add_test(NAME step-4.mpi_np2_same_as_np1
