@@ -1498,6 +1498,13 @@ TEST(LoadStages, BadStageListsAreRefusedWithTheFileAndTheKey)
                    "got 0."),
             std::string::npos)
     << m;
+  m = message("  set load stages = first\n",
+              "subsection Stage first\n  set loads = P1.tip\n"
+              "  set load steps = 2000000000\nend\n");
+  EXPECT_NE(m.find("test.prm>: Stage first: load steps must be at most 1000 "
+                   "(each step is a contact solve), got 2000000000."),
+            std::string::npos)
+    << m;
   // A load in no stage: the stacked scene with a second load on P2.
   std::string       text  = staged_scene("  set load stages = first\n",
                                   "subsection Stage first\n"

@@ -73,6 +73,12 @@ namespace FuzzyContact
         AssertThrow(steps >= 1,
                     ExcMessage(where + ": load steps must be at least 1, got " +
                                std::to_string(steps) + "."));
+        // Each step is a contact solve of every model: step-3's cap.
+        AssertThrow(steps <= 1000,
+                    ExcMessage(where +
+                               ": load steps must be at most 1000 (each step "
+                               "is a contact solve), got " +
+                               std::to_string(steps) + "."));
         stage.n_load_steps     = static_cast<unsigned int>(steps);
         const std::string text = prm.get("loads");
         prm.leave_subsection();
