@@ -155,6 +155,42 @@ TEST(Scene, ZonesInheritAndOverride)
   EXPECT_EQ(scene.components[0].zone_index("tip_half"), 1u);
 }
 
+// A support that the clamps and the supports before it leave nothing to
+// hold is refused when the scene is read, naming the scene file.
+TEST(Scene, ASupportWithNothingToHoldIsRefusedNamingTheFile)
+{
+  const std::string text =
+    replace(cantilever_scene,
+            "  set clamped faces      = left",
+            "  set clamped faces = left\n  set supports = again\n"
+            "  subsection Support again\n    set face = left\n"
+            "    set fixed components = y\n  end");
+  std::string message;
+  try
+    {
+      Scene::read_from_string(text, "test.prm");
+    }
+  catch (const dealii::ExceptionBase &e)
+    {
+      message = Input::message_of(e);
+    }
+  EXPECT_NE(message.find("test.prm"), std::string::npos) << message;
+  EXPECT_NE(message.find("Component beam, support again: the supports "
+                         "listed before it already hold every DoF it fixes "
+                         "on the face 'left'"),
+            std::string::npos)
+    << message;
+  // A support on another face, or fixing a component the clamp does not
+  // (none here), is fine: the cantilever with a roller on its top face.
+  EXPECT_NO_THROW(Scene::read_from_string(
+    replace(cantilever_scene,
+            "  set clamped faces      = left",
+            "  set clamped faces = left\n  set supports = roller\n"
+            "  subsection Support roller\n    set face = top\n"
+            "    set fixed components = y\n  end"),
+    "test.prm"));
+}
+
 // Each bad input gives a message that names the parameter and the problem.
 struct BadInput
 {

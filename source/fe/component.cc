@@ -352,16 +352,13 @@ namespace FuzzyContact
                   support.displacement[dof_directions_[dof]] / magnitude;
             }
         // Sharing a few nodes (corners) is fine; a support that holds
-        // nothing would be silently ignored.
+        // nothing would be silently ignored (Scene::read refuses one whose
+        // face and components earlier supports already fix).
         AssertThrow(n_held > 0,
-                    ExcMessage(where +
-                               ": the supports listed before it "
-                               "already hold every DoF it fixes on "
-                               "the face '" +
+                    ExcMessage(where + ": it holds no DoF of the face '" +
                                support.face +
-                               "', so it would have no effect (nor its "
-                               "displacement): fix other components, "
-                               "another face, or remove it."));
+                               "': the supports listed before it hold them "
+                               "all."));
         if (magnitude > 0)
           {
             for (unsigned int i = 0; i < field.size(); ++i)

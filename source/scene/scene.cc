@@ -145,6 +145,37 @@ namespace FuzzyContact
     }
 
 
+    // A support on a face whose every fixed component the clamps and the
+    // supports listed before it already fix on that face would hold
+    // nothing (its displacement with it): refused here, where the scene
+    // file is known (Component checks the DoFs themselves).
+    void
+    check_not_shadowed(const ComponentDescription &component,
+                       const Support              &support,
+                       const std::string          &where)
+    {
+      std::array<bool, 2> held = {{false, false}};
+      for (const Support &earlier : component.all_supports())
+        {
+          if (earlier.name == support.name)
+            break;
+          if (earlier.face == support.face)
+            for (unsigned int i = 0; i < 2; ++i)
+              held[i] = held[i] || earlier.fixed[i];
+        }
+      const bool fixes_any = support.fixed[0] || support.fixed[1];
+      AssertThrow(!fixes_any || (support.fixed[0] && !held[0]) ||
+                    (support.fixed[1] && !held[1]),
+                  ExcMessage(where +
+                             ": the supports listed before it already hold "
+                             "every DoF it fixes on the face '" +
+                             support.face +
+                             "', so it would have no effect (nor its "
+                             "displacement): fix other components, another "
+                             "face, or remove it."));
+    }
+
+
     // The supports of a component.
     void
     parse_supports(ParameterHandler     &prm,
@@ -178,6 +209,7 @@ namespace FuzzyContact
               support.fixed[i] ? Input::finite(d[i], swhere + ": displacement")
                                : 0.;
           prm.leave_subsection();
+          check_not_shadowed(component, support, swhere);
           // A prescribed displacement acts like a load of its own (whose
           // force is the displacement's magnitude), so that it can be made
           // fuzzy and is solved for like any load.
