@@ -1,5 +1,6 @@
 # Checks step-4's results.json on the Hertz scene (Gmsh meshes, a curved
-# contact, a prescribed displacement; fuzzy block modulus, displacement and
+# contact, a prescribed displacement; fuzzy moduli of both bodies (the
+# roller carries the displacement), the displacement and
 # friction): the contact force, the contact length and the block's
 # indentation within 1e-6 of the Extension Principle (exact full-order
 # solves); the largest pressure, a maximum over nodes whose pressures

@@ -217,13 +217,27 @@ namespace FuzzyContact
       {
         if (stage != nullptr && !stage->ramps(c, l))
           continue;
-        const double factor = load_forces_[c][l] / reference_forces_[c][l];
+        const double factor = load_factor(c, l);
         if (factor == 1)
           u += F.load_responses[l];
         else if (factor != 0)
           u.add(factor, F.load_responses[l]);
       }
     return u;
+  }
+
+
+  double
+  FullOrderContact::load_factor(const unsigned int c,
+                                const unsigned int l) const
+  {
+    // K = s K_ref: a force's response is K_ref^{-1} f / s; the forces that
+    // impose a displacement are s times those of K_ref, so their response
+    // does not change.
+    const double s = components[c]->description().loads[l].is_displacement ?
+                       1. :
+                       1. / factorized[c].scale;
+    return s * load_forces_[c][l] / reference_forces_[c][l];
   }
 
 
@@ -235,13 +249,13 @@ namespace FuzzyContact
   {
     const Factorized &F = factorized[c];
     double            u = 0;
-    for (unsigned int l = 0; l < F.load_responses.size(); ++l)
-      u += load_factor_ * (load_forces_[c][l] / reference_forces_[c][l]) *
-           F.load_responses[l][dof];
     for (unsigned int j = 0; j < p.size(); ++j)
       if (p[j] != 0 && !F.observed_columns[j].empty())
         u += p[j] * F.observed_columns[j][position];
-    return u / F.scale;
+    u /= F.scale;
+    for (unsigned int l = 0; l < F.load_responses.size(); ++l)
+      u += load_factor_ * load_factor(c, l) * F.load_responses[l][dof];
+    return u;
   }
 
 
@@ -376,9 +390,7 @@ namespace FuzzyContact
     Vector<double> g(interface.n_rows());
     for (unsigned int c = 0; c < components.size(); ++c)
       {
-        Vector<double> u = load_response(c, stage);
-        u /= factorized[c].scale;
-        interface.gap_operator(c).vmult_add(g, u);
+        interface.gap_operator(c).vmult_add(g, load_response(c, stage));
       }
     return g;
   }

@@ -507,6 +507,8 @@ namespace FuzzyContact
       {
         r.loads.push_back(project(component.reference_load_vector(l)));
         r.reference_forces.push_back(component.reference_load_force(l));
+        r.stiffness_proportional.push_back(
+          component.description().loads[l].is_displacement);
       }
     r.observed_dofs = observed_dofs;
     r.observation   = rows(observed_dofs);

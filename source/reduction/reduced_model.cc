@@ -246,7 +246,11 @@ namespace FuzzyContact
   ReducedContactModel::load_factor(const unsigned int c,
                                    const unsigned int l) const
   {
-    return load_forces[c][l] / variable[c].matrices.reference_forces[l];
+    // The reduced loads are those of the nominal stiffness; at K = s K_ref
+    // the forces that impose a displacement are s times theirs.
+    const ReducedComponentMatrices &r = variable[c].matrices;
+    return (r.stiffness_proportional[l] ? scales[c] : 1.) * load_forces[c][l] /
+           r.reference_forces[l];
   }
 
 
@@ -256,7 +260,8 @@ namespace FuzzyContact
     const unsigned int              m = problem_.g_initial.size();
     const ReducedComponentMatrices &r = part.matrices;
     const unsigned int              k = r.stiffness.m();
-    bool loads_fit = r.loads.size() == r.reference_forces.size();
+    bool loads_fit = r.loads.size() == r.reference_forces.size() &&
+                     r.loads.size() == r.stiffness_proportional.size();
     for (const Vector<double> &f : r.loads)
       loads_fit = loads_fit && f.size() == k;
     AssertThrow(r.stiffness.n() == k && r.gap_operator.m() == m &&

@@ -214,17 +214,21 @@ namespace FuzzyContact
                            "> is not a quantity; use E, rho, force, mu or "
                            "gap."));
     q.kind = what == "E" ? Kind::youngs_modulus : Kind::density;
-    // The forces that impose a displacement scale with the moduli, which
-    // the reduced models' fixed load vectors do not follow (yet).
+    // The forces that impose a displacement scale with the moduli: with
+    // the modulus of the whole body (K = s K_ref) they are s times the
+    // nominal ones, which every model follows; a zone's own modulus would
+    // change their shape, which the re-analysed reduced models' load
+    // vectors do not follow (yet).
     for (const EdgeLoad &load : component.loads)
-      AssertThrow(what != "E" || !load.is_displacement,
+      AssertThrow(what != "E" || parts.size() != 3 || !load.is_displacement,
                   ExcMessage(where + ": component " + component.name +
                              " has a prescribed displacement (support " +
                              load.name +
-                             "), whose forces scale with its modulus; a "
-                             "varying modulus of such a component is not "
-                             "available yet. Vary the modulus of the other "
-                             "body, or drive this one by a force."));
+                             "), whose forces depend on its zone moduli; "
+                             "the modulus of one of its zones cannot vary "
+                             "yet. Vary the modulus of the whole body (" +
+                             component.name +
+                             ".E), or drive this one by a force."));
     if (parts.size() == 3)
       {
         for (unsigned int z = 0; z < component.zones.size(); ++z)

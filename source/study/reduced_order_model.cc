@@ -45,8 +45,9 @@ namespace FuzzyContact
             f[i] = load[begin + i];
           part.loads.push_back(std::move(f));
         }
-      part.reference_forces = r.reference_forces;
-      part.observed_dofs    = r.observed_dofs;
+      part.reference_forces       = r.reference_forces;
+      part.stiffness_proportional = r.stiffness_proportional;
+      part.observed_dofs          = r.observed_dofs;
       part.observation = block(r.observation, 0, r.observation.m(), begin, n);
       return part;
     }
@@ -461,7 +462,8 @@ namespace FuzzyContact
           f[n_m + j] = m.psi_f[l][j];
         r.loads.push_back(std::move(f));
       }
-    r.reference_forces = m.nominal_matrices.reference_forces;
+    r.reference_forces       = m.nominal_matrices.reference_forces;
+    r.stiffness_proportional = m.nominal_matrices.stiffness_proportional;
     r.observed_dofs    = m.nominal_matrices.observed_dofs;
     r.observation      = on_basis(m.O_T, m.O_psi);
     return r;

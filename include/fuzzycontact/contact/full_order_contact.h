@@ -185,11 +185,17 @@ namespace FuzzyContact
     Vector<double>
     load_vector(const unsigned int c) const;
     /**
-     * K_c^{-1} f_c at load factor 1, from the kept load responses (of the
-     * loads of @p stage only, if given).
+     * K_c^{-1} f_c at load factor 1 and the current stiffness, from the
+     * kept load responses (of the loads of @p stage only, if given).
      */
     Vector<double>
     load_response(const unsigned int c, const LoadStage *stage = nullptr) const;
+    /**
+     * The factor of load l of component c's kept response at the current
+     * load force and stiffness scale.
+     */
+    double
+    load_factor(const unsigned int c, const unsigned int l) const;
     /** The load history as the gaps see it (one stage per load stage). */
     std::vector<GapLoadStage>
     gap_load_stages();

@@ -73,6 +73,12 @@ namespace FuzzyContact
     std::vector<Vector<double>> loads;
     /** The reference force [N] of each load. */
     std::vector<double> reference_forces;
+    /**
+     * Per load: true if its forces are proportional to the stiffness (a
+     * prescribed displacement's, EdgeLoad::is_displacement): when the
+     * stiffness is scaled by s, so are they.
+     */
+    std::vector<bool> stiffness_proportional;
     /** DoFs whose displacements the solvers report, and V's rows there. */
     std::vector<types::global_dof_index> observed_dofs;
     FullMatrix<double>                   observation;
@@ -82,8 +88,8 @@ namespace FuzzyContact
     void
     serialize(Archive &archive, const unsigned int)
     {
-      archive &stiffness &gap_operator &loads &reference_forces &observed_dofs
-        &observation;
+      archive &stiffness &gap_operator &loads &reference_forces
+        &stiffness_proportional &observed_dofs &observation;
     }
   };
 
