@@ -1047,7 +1047,7 @@ end
 TEST(FuzzyContactModel, ModulusOfABodyDrivenByADisplacement)
 {
   Scene scene = Scene::read(source_dir + "/prm/patch-test.prm");
-  scene.components[0].subdivisions = {5, 3};
+  scene.components[0].subdivisions = {{5, 3}};
   const FuzzyParameterSet set      = fuzzy_parameters(scene, R"(
 set fuzzy parameters = Upper.E, Lower.E, Upper.press.displacement
 subsection Fuzzy parameter Upper.E
