@@ -1342,22 +1342,31 @@ TEST(Validation, HertzRollerOnBlock)
 }
 
 
-// A body its supports do not hold is refused before any solve, naming the
+// A body its supports do not hold is held by contact alone: it is pinned
+// for the solvers and its free motions are named. Without a contact pair
+// nothing can hold it, and it is refused before any solve, naming the
 // motion left free: a roller (x fixed) on P2's right face leaves it free to
-// slide along y; without any support all three motions are free.
-TEST(MeshFiles, AFloatingBodyIsRefusedNamingTheFreeMotion)
+// slide along y; without any support all three motions are free. With the
+// pair, P2 under the roller carries no load and P1 only pushes it away: its
+// position is not determined, which the solve says.
+TEST(MeshFiles, AFloatingBodyNeedsAContactPairAndAPositionItsContactFixes)
 {
-  const auto message_of_building = [](const std::string &text) {
+  const auto message_of = [](const std::function<void()> &f) {
     try
       {
-        const Scene  scene = Scene::read_from_string(text);
-        ContactScene bodies(scene, 0);
+        f();
       }
     catch (const dealii::ExceptionBase &e)
       {
         return Input::message_of(e);
       }
     return std::string();
+  };
+  const auto message_of_building = [&](const std::string &text) {
+    return message_of([&]() {
+      const Scene  scene = Scene::read_from_string(text);
+      ContactScene bodies(scene, 0);
+    });
   };
   EXPECT_EQ(message_of_building(stacked_scene(false)), "");
   std::string roller = stacked_scene(false);
@@ -1366,15 +1375,43 @@ TEST(MeshFiles, AFloatingBodyIsRefusedNamingTheFreeMotion)
                  "  set supports = guide\n  subsection Support guide\n"
                  "    set face = right\n    set fixed components = x\n"
                  "  end\n");
-  std::string m = message_of_building(roller);
+  {
+    const Scene  scene = Scene::read_from_string(roller);
+    ContactScene bodies(scene, 0);
+    EXPECT_EQ(bodies.component(1).free_rigid_motion(),
+              "translation along (0, 1)");
+    ASSERT_EQ(bodies.component(1).pinned_dofs().size(), 1u);
+    EXPECT_TRUE(bodies.component(0).pinned_dofs().empty());
+    FullOrderModel    model(bodies, ObservedDofs(2));
+    const std::string m = message_of([&]() {
+      model.set_state(SceneState(scene));
+      model.solve();
+    });
+    EXPECT_NE(m.find("the position of a body held by contact alone is not "
+                     "determined"),
+              std::string::npos)
+      << m;
+    EXPECT_NE(m.find("P2: translation along (0, 1)"), std::string::npos) << m;
+  }
+  std::string alone = roller;
+  alone.replace(alone.find("set contact pairs = interface"),
+                std::string("set contact pairs = interface").size(),
+                "set contact pairs =");
+  alone.erase(alone.find("subsection Contact interface"));
+  std::string m = message_of_building(alone);
   EXPECT_NE(m.find("Component P2: its clamps and supports leave a "
-                   "rigid-body motion free (translation along (0, 1))"),
+                   "rigid-body motion free (translation along (0, 1)), and "
+                   "no contact pair can hold it"),
             std::string::npos)
     << m;
   std::string none = stacked_scene(false);
   none.replace(none.find("  set clamped faces = right\n"),
                std::string("  set clamped faces = right\n").size(),
                "");
+  none.replace(none.find("set contact pairs = interface"),
+               std::string("set contact pairs = interface").size(),
+               "set contact pairs =");
+  none.erase(none.find("subsection Contact interface"));
   m = message_of_building(none);
   EXPECT_NE(m.find("Component P2: its clamps and supports leave a "
                    "rigid-body motion free ("),

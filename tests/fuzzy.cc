@@ -1047,8 +1047,8 @@ end
 TEST(FuzzyContactModel, ModulusOfABodyDrivenByADisplacement)
 {
   Scene scene = Scene::read(source_dir + "/prm/patch-test.prm");
-  scene.components[0].subdivisions = {{5, 3}};
-  const FuzzyParameterSet set      = fuzzy_parameters(scene, R"(
+  scene.components[0].subdivisions       = {{5, 3}};
+  const FuzzyParameterSet        set     = fuzzy_parameters(scene, R"(
 set fuzzy parameters = Upper.E, Lower.E, Upper.press.displacement
 subsection Fuzzy parameter Upper.E
   set values   = 0.5, 1, 2

@@ -1,28 +1,14 @@
 #include <fuzzycontact/base/input.h>
 #include <fuzzycontact/contact/active_set_solver.h>
+#include <fuzzycontact/contact/status_system.h>
 
 #include <deal.II/base/exceptions.h>
-#include <deal.II/lac/lapack_full_matrix.h>
-#include <deal.II/lac/lapack_templates.h>
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
 #include <set>
 #include <sstream>
-
-// LAPACK's condition estimate of an LU factorisation (not wrapped by
-// deal.II).
-extern "C" void
-dgecon_(const char                    *norm,
-        const dealii::types::blas_int *n,
-        const double                  *a,
-        const dealii::types::blas_int *lda,
-        const double                  *anorm,
-        double                        *rcond,
-        double                        *work,
-        dealii::types::blas_int       *iwork,
-        dealii::types::blas_int       *info);
 
 namespace FuzzyContact
 {
@@ -61,72 +47,6 @@ namespace FuzzyContact
 
   namespace
   {
-    // Solves A x = b (A square, general) by LU with partial pivoting; if
-    // LAPACK's condition estimate says A is numerically singular, by the
-    // pseudo-inverse (least squares, minimum norm) instead.
-    Vector<double>
-    solve_dense(const FullMatrix<double> &A, const Vector<double> &b)
-    {
-      const types::blas_int n = A.m();
-      Vector<double>        x(b);
-      if (n == 0)
-        return x;
-      std::vector<double> lu(n * n);
-      double              norm1 = 0;
-      for (types::blas_int j = 0; j < n; ++j)
-        {
-          double column = 0;
-          for (types::blas_int i = 0; i < n; ++i)
-            {
-              lu[i + j * n] = A(i, j);
-              column += std::abs(A(i, j));
-            }
-          norm1 = std::max(norm1, column);
-        }
-      std::vector<types::blas_int> pivots(n);
-      types::blas_int              info = 0;
-      getrf(&n, &n, lu.data(), &n, pivots.data(), &info);
-      Assert(info >= 0, ExcInternalError());
-      double rcond = 0;
-      if (info == 0)
-        {
-          std::vector<double>          work(4 * n);
-          std::vector<types::blas_int> iwork(n);
-          const char                   norm = '1';
-          dgecon_(&norm,
-                  &n,
-                  lu.data(),
-                  &n,
-                  &norm1,
-                  &rcond,
-                  work.data(),
-                  iwork.data(),
-                  &info);
-          Assert(info == 0, ExcInternalError());
-        }
-      if (rcond > 1e-13)
-        {
-          const char            trans = 'N';
-          const types::blas_int one   = 1;
-          getrs(&trans,
-                &n,
-                &one,
-                lu.data(),
-                &n,
-                pivots.data(),
-                x.data(),
-                &n,
-                &info);
-          Assert(info == 0, ExcInternalError());
-          return x;
-        }
-      LAPACKFullMatrix<double> pinv(n, n);
-      pinv = A;
-      pinv.compute_inverse_svd(1e-13);
-      pinv.vmult(x, b);
-      return x;
-    }
-
     // A status with its slip direction, as one comparable key.
     std::vector<int>
     signature(const std::vector<ContactStatus> &status,
@@ -139,91 +59,6 @@ namespace FuzzyContact
             ? 0
             : (status[k] == ContactStatus::stick ? 1 : 2 + (sign[k] > 0));
       return key;
-    }
-
-    // The linear system of a fixed status: unknowns p_n of the closed nodes,
-    // then p_t of the sticking ones; equations g_n = 0 of the closed nodes,
-    // then g_t = g_t,previous of the sticking ones.
-    struct StatusSystem
-    {
-      std::vector<unsigned int> closed, sticking, rows, columns;
-      FullMatrix<double>        A;
-
-      StatusSystem(FlexibilityOperator              &W,
-                   const std::vector<ContactStatus> &status,
-                   const std::vector<int>           &sign,
-                   const std::vector<double>        &mu)
-      {
-        for (unsigned int k = 0; k < status.size(); ++k)
-          if (status[k] != ContactStatus::open)
-            {
-              closed.push_back(k);
-              if (status[k] == ContactStatus::stick)
-                sticking.push_back(k);
-            }
-        for (const unsigned int k : closed)
-          {
-            columns.push_back(normal_row(k));
-            if (mu[k] > 0)
-              columns.push_back(tangential_row(k));
-          }
-        W.prepare(columns);
-        for (const unsigned int k : closed)
-          rows.push_back(normal_row(k));
-        for (const unsigned int k : sticking)
-          rows.push_back(tangential_row(k));
-
-        const unsigned int size = rows.size();
-        A.reinit(size, size);
-        for (unsigned int r = 0; r < size; ++r)
-          {
-            const unsigned int i = rows[r];
-            for (unsigned int c = 0; c < closed.size(); ++c)
-              {
-                const unsigned int k = closed[c];
-                A(r, c)              = W(i, normal_row(k));
-                if (status[k] == ContactStatus::slip && mu[k] > 0)
-                  A(r, c) += mu[k] * sign[k] * W(i, tangential_row(k));
-              }
-            for (unsigned int c = 0; c < sticking.size(); ++c)
-              A(r, closed.size() + c) = W(i, tangential_row(sticking[c]));
-          }
-      }
-
-      // The forces of a solution x of the system.
-      Vector<double>
-      forces(const Vector<double>             &x,
-             const std::vector<ContactStatus> &status,
-             const std::vector<int>           &sign,
-             const std::vector<double>        &mu) const
-      {
-        Vector<double> p(2 * status.size());
-        for (unsigned int c = 0; c < closed.size(); ++c)
-          {
-            const unsigned int k = closed[c];
-            p[normal_row(k)]     = x[c];
-            if (status[k] == ContactStatus::slip)
-              p[tangential_row(k)] = mu[k] * sign[k] * x[c];
-          }
-        for (unsigned int c = 0; c < sticking.size(); ++c)
-          p[tangential_row(sticking[c])] = x[closed.size() + c];
-        return p;
-      }
-    };
-
-    // g = g_free + W p, using only the columns where p is not zero.
-    Vector<double>
-    gaps_of(const FlexibilityOperator       &W,
-            const Vector<double>            &g_free,
-            const Vector<double>            &p,
-            const std::vector<unsigned int> &columns)
-    {
-      Vector<double> g = g_free;
-      for (const unsigned int j : columns)
-        if (p[j] != 0)
-          for (unsigned int i = 0; i < g.size(); ++i)
-            g[i] += W(i, j) * p[j];
-      return g;
     }
 
     // One load step of the method described in active_set_solver.h: the
@@ -267,12 +102,20 @@ namespace FuzzyContact
       ContactState
       solve()
       {
+        check_equilibrium(step, mu, what);
         if (std::all_of(status.begin(),
                         status.end(),
                         [](const ContactStatus s) {
                           return s == ContactStatus::open;
                         }))
-          frictionless_start();
+          {
+            // A body held by contact alone has no position before its
+            // contact holds it: start from every node closed.
+            if (step.n_motions() > 0)
+              std::fill(status.begin(), status.end(), ContactStatus::stick);
+            else
+              frictionless_start();
+          }
         complete_statuses();
 
         // Phase 2: primal-dual active set iterations.
@@ -296,11 +139,15 @@ namespace FuzzyContact
                                         c_t);
             const double scale = residual_scale(state.p, step.g_free, c_n);
             const double worst = *std::max_element(r.begin(), r.end());
-            residual           = (worst == 0 ? 0. : worst / scale);
-            state.iterations   = iterations;
-            state.residual     = residual;
+            residual           = std::max(worst == 0 ? 0. : worst / scale,
+                                equilibrium_residual(step, state.p));
+            state.iterations = iterations;
+            state.residual   = residual;
             if (residual <= tol)
-              return converged(state);
+              {
+                check_motions_determined(step, state.p, what);
+                return converged(state);
+              }
             if (iterations >= max_iterations)
               break;
 
@@ -313,8 +160,14 @@ namespace FuzzyContact
                         << iterations
                         << " iterations, but the complementarity residual is "
                         << residual << " > " << tol
-                        << " (the active system is too ill-conditioned for "
-                           "this tolerance).";
+                        << (step.n_motions() > 0 &&
+                                equilibrium_residual(step, state.p) > tol
+                              ? " (the contact forces of the closed nodes "
+                                "cannot balance the load on the bodies held by "
+                                "contact alone: their position is not "
+                                "determined by this contact)."
+                              : " (the active system is too ill-conditioned "
+                                "for this tolerance).");
                 AssertThrow(false, ExcMessage(message.str()));
               }
             // A cycle: from here on, one node per iteration (Murty's rule).
@@ -529,7 +382,7 @@ namespace FuzzyContact
       void
       solve_with_statuses(ContactState &state)
       {
-        const StatusSystem system(W, status, sign, mu);
+        const StatusSystem system(W, status, sign, mu, step.rigid);
         Vector<double>     b(system.rows.size());
         for (unsigned int r = 0; r < b.size(); ++r)
           {
@@ -537,8 +390,11 @@ namespace FuzzyContact
             b[r] = (r < system.closed.size() ? 0. : step.g_previous[i]) -
                    step.g_free[i];
           }
-        state.p = system.forces(solve_dense(system.A, b), status, sign, mu);
-        state.g = gaps_of(W, step.g_free, state.p, system.columns);
+        const Vector<double> x = system.solve(b, step.rigid_load);
+        state.p                = system.forces(x, status, sign, mu);
+        state.rigid            = system.amplitudes(x);
+        state.g =
+          gaps_of(W, step.g_free, state.p, system.columns, &step, state.rigid);
       }
 
       // The status of node k that the complementarity functions predict.
@@ -661,20 +517,23 @@ namespace FuzzyContact
   }
 
 
-  Vector<double>
+  ContactState
   ActiveSetSolver::correction(FlexibilityOperator       &W,
                               const ContactState        &state,
                               const std::vector<double> &mu,
-                              const Vector<double>      &violation) const
+                              const Vector<double>      &violation,
+                              const RigidMotions        *rigid,
+                              const Vector<double>      &imbalance) const
   {
-    const StatusSystem system(W, state.status, state.slip_sign, mu);
+    const StatusSystem system(W, state.status, state.slip_sign, mu, rigid);
     Vector<double>     b(system.rows.size());
     for (unsigned int r = 0; r < b.size(); ++r)
       b[r] = -violation[system.rows[r]];
-    return system.forces(solve_dense(system.A, b),
-                         state.status,
-                         state.slip_sign,
-                         mu);
+    const Vector<double> x = system.solve(b, imbalance);
+    ContactState         change;
+    change.p     = system.forces(x, state.status, state.slip_sign, mu);
+    change.rigid = system.amplitudes(x);
+    return change;
   }
 
 

@@ -1,9 +1,11 @@
 #include <fuzzycontact/contact/contact_problem.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/lac/lapack_full_matrix.h>
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace FuzzyContact
 {
@@ -60,6 +62,31 @@ namespace FuzzyContact
   DenseFlexibility::diagonal(const unsigned int i)
   {
     return W(i, i);
+  }
+
+
+  unsigned int
+  RigidMotions::size() const
+  {
+    return gaps.n();
+  }
+
+  RigidMotions
+  RigidMotions::restricted(const std::vector<unsigned int> &rows) const
+  {
+    RigidMotions r;
+    r.names = names;
+    r.gaps.reinit(rows.size(), size());
+    for (unsigned int i = 0; i < rows.size(); ++i)
+      for (unsigned int j = 0; j < size(); ++j)
+        r.gaps(i, j) = gaps(rows[i], j);
+    return r;
+  }
+
+  unsigned int
+  LoadStep::n_motions() const
+  {
+    return rigid == nullptr ? 0 : rigid->size();
   }
 
 
@@ -131,6 +158,17 @@ namespace FuzzyContact
       AssertThrow(std::isfinite(value) && value >= 0,
                   ExcMessage("ContactProblem: friction coefficients must not "
                              "be negative."));
+    const unsigned int r = rigid.size();
+    AssertThrow((r == 0 || rigid.gaps.m() == m) && rigid.names.size() == r &&
+                  rigid_load.size() == r,
+                ExcMessage("ContactProblem: the free rigid-body motions need "
+                           "a gap row per contact row, a name and a load "
+                           "resultant each."));
+    for (const GapLoadStage &stage : stages)
+      AssertThrow(stage.rigid_load.size() == r,
+                  ExcMessage("ContactProblem: a load stage needs the "
+                             "resultant of its loads along every free "
+                             "rigid-body motion."));
   }
 
 
@@ -139,10 +177,12 @@ namespace FuzzyContact
     const Vector<double>                                &g_initial,
     const std::vector<GapLoadStage>                     &stages,
     const double                                         load_factor,
-    const std::function<ContactState(const LoadStep &)> &solve_step)
+    const std::function<ContactState(const LoadStep &)> &solve_step,
+    const RigidMotions                                  *rigid)
   {
     AssertThrow(!stages.empty(),
                 ExcMessage("A load history needs at least one stage."));
+    const unsigned int n_motions = rigid == nullptr ? 0 : rigid->size();
     AssertThrow(std::isfinite(load_factor),
                 ExcMessage("The load factor must be finite."));
     const unsigned int m = g_initial.size();
@@ -151,6 +191,9 @@ namespace FuzzyContact
         AssertThrow(stage.n_steps >= 1,
                     ExcMessage("The number of load steps must be at least 1."));
         AssertDimension(stage.g_load.size(), m);
+        AssertThrow(n_motions == 0 || stage.rigid_load.size() == n_motions,
+                    ExcMessage("A load stage needs the resultant of its "
+                               "loads along every free rigid-body motion."));
       }
 
     ContactState state;
@@ -162,6 +205,8 @@ namespace FuzzyContact
     unsigned int   iterations = 0, step_count = 0;
     double         residual = 0;
     Vector<double> g_held   = g_initial; // the earlier stages at full load
+    Vector<double> e_held(n_motions);
+    state.rigid.reinit(n_motions);
     for (unsigned int stage = 0; stage < stages.size(); ++stage)
       {
         const GapLoadStage &current = stages[stage];
@@ -175,11 +220,19 @@ namespace FuzzyContact
             step.g_free.add(step.load_factor, current.g_load);
             step.g_previous = state.g;
             step.previous   = state;
-            state           = solve_step(step);
+            if (n_motions > 0)
+              {
+                step.rigid      = rigid;
+                step.rigid_load = e_held;
+                step.rigid_load.add(step.load_factor, current.rigid_load);
+              }
+            state = solve_step(step);
             iterations += state.iterations;
             residual = std::max(residual, state.residual);
           }
         g_held.add(load_factor, current.g_load);
+        if (n_motions > 0)
+          e_held.add(load_factor, current.rigid_load);
       }
     state.iterations = iterations;
     state.residual   = residual;
@@ -269,6 +322,209 @@ namespace FuzzyContact
       if (g_free[normal_row(k)] < 0)
         scale = std::max(scale, -c_n(k) * g_free[normal_row(k)]);
     return scale;
+  }
+
+
+  void
+  add_rigid_gaps(const LoadStep       &step,
+                 const Vector<double> &a,
+                 Vector<double>       &g)
+  {
+    for (unsigned int j = 0; j < step.n_motions(); ++j)
+      if (a[j] != 0)
+        for (unsigned int i = 0; i < g.size(); ++i)
+          g[i] += step.rigid->gaps(i, j) * a[j];
+  }
+
+
+  double
+  equilibrium_residual(const LoadStep &step, const Vector<double> &p)
+  {
+    double worst = 0;
+    for (unsigned int j = 0; j < step.n_motions(); ++j)
+      {
+        double sum = step.rigid_load[j], scale = std::abs(step.rigid_load[j]);
+        for (unsigned int i = 0; i < p.size(); ++i)
+          if (p[i] != 0)
+            {
+              sum += step.rigid->gaps(i, j) * p[i];
+              scale += std::abs(step.rigid->gaps(i, j) * p[i]);
+            }
+        if (scale > 0)
+          worst = std::max(worst, std::abs(sum) / scale);
+      }
+    return worst;
+  }
+
+
+  void
+  check_motions_determined(const LoadStep       &step,
+                           const Vector<double> &p,
+                           const std::string    &what)
+  {
+    double total = 0;
+    for (unsigned int j = 0; j < step.n_motions(); ++j)
+      total += std::abs(step.rigid_load[j]);
+    for (unsigned int k = 0; 2 * k < p.size(); ++k)
+      total += std::abs(p[normal_row(k)]);
+    for (unsigned int j = 0; j < step.n_motions(); ++j)
+      {
+        double along = std::abs(step.rigid_load[j]);
+        for (unsigned int i = 0; i < p.size(); ++i)
+          along += std::abs(step.rigid->gaps(i, j) * p[i]);
+        AssertThrow(along > 1e-12 * total && total > 0,
+                    ExcMessage(what +
+                               ": the position of a body held by "
+                               "contact alone is not determined (load "
+                               "step " +
+                               std::to_string(step.step) +
+                               "): no load and no contact force acts along " +
+                               step.rigid->names[j] +
+                               ", so any position that does not penetrate "
+                               "is a solution. Hold it by a support, or load "
+                               "it onto its contact."));
+      }
+  }
+
+
+  namespace
+  {
+    // x >= 0 minimising |A x - b| (A: rows x columns, few rows), by Lawson
+    // and Hanson's NNLS; the least-squares solves on the passive set by the
+    // pseudo-inverse.
+    Vector<double>
+    nonnegative_least_squares(const FullMatrix<double> &A,
+                              const Vector<double>     &b)
+    {
+      const unsigned int m = A.m(), n = A.n();
+      Vector<double>     x(n);
+      std::vector<bool>  passive(n, false);
+      const auto         residual = [&](const Vector<double> &y) {
+        Vector<double> r(b);
+        for (unsigned int i = 0; i < m; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            r[i] -= A(i, j) * y[j];
+        return r;
+      };
+      // z on the passive set: argmin |A_P z - b|.
+      const auto passive_solution = [&]() {
+        std::vector<unsigned int> P;
+        for (unsigned int j = 0; j < n; ++j)
+          if (passive[j])
+            P.push_back(j);
+        LAPACKFullMatrix<double> AP(m, P.size());
+        for (unsigned int i = 0; i < m; ++i)
+          for (unsigned int c = 0; c < P.size(); ++c)
+            AP(i, c) = A(i, P[c]);
+        AP.compute_inverse_svd(1e-13);
+        Vector<double> zP(P.size()), z(n);
+        AP.vmult(zP, b);
+        for (unsigned int c = 0; c < P.size(); ++c)
+          z[P[c]] = zP[c];
+        return z;
+      };
+      for (unsigned int outer = 0; outer < 3 * n + 10; ++outer)
+        {
+          const Vector<double> r      = residual(x);
+          int                  best   = -1;
+          double               w_best = 1e-14 * (b.l2_norm() + 1e-300);
+          for (unsigned int j = 0; j < n; ++j)
+            if (!passive[j])
+              {
+                double w = 0;
+                for (unsigned int i = 0; i < m; ++i)
+                  w += A(i, j) * r[i];
+                if (w > w_best)
+                  {
+                    w_best = w;
+                    best   = j;
+                  }
+              }
+          if (best < 0)
+            break;
+          passive[best] = true;
+          for (unsigned int inner = 0; inner < 3 * n + 10; ++inner)
+            {
+              const Vector<double> z    = passive_solution();
+              double               step = 1;
+              for (unsigned int j = 0; j < n; ++j)
+                if (passive[j] && z[j] <= 0)
+                  step = std::min(step, x[j] / (x[j] - z[j]));
+              for (unsigned int j = 0; j < n; ++j)
+                x[j] += step * (z[j] - x[j]);
+              if (step == 1)
+                break;
+              for (unsigned int j = 0; j < n; ++j)
+                if (passive[j] && x[j] <= 0)
+                  {
+                    passive[j] = false;
+                    x[j]       = 0;
+                  }
+            }
+        }
+      return x;
+    }
+  } // namespace
+
+
+  void
+  check_equilibrium(const LoadStep            &step,
+                    const std::vector<double> &mu,
+                    const std::string         &what)
+  {
+    const unsigned int r = step.n_motions();
+    if (r == 0)
+      return;
+    // The edges of node k's friction cone: p_n = 1, p_t = +-mu (one edge
+    // without friction), as resultants along the free motions, normalised.
+    const FullMatrix<double>        &G = step.rigid->gaps;
+    std::vector<std::vector<double>> edges;
+    for (unsigned int k = 0; k < mu.size(); ++k)
+      for (const double t : {1., -1.})
+        {
+          if (t < 0 && mu[k] == 0)
+            continue;
+          std::vector<double> a(r);
+          double              norm = 0;
+          for (unsigned int j = 0; j < r; ++j)
+            {
+              a[j] = G(normal_row(k), j) + t * mu[k] * G(tangential_row(k), j);
+              norm += a[j] * a[j];
+            }
+          if (norm == 0)
+            continue;
+          for (double &e : a)
+            e /= std::sqrt(norm);
+          edges.push_back(std::move(a));
+        }
+    Vector<double> b(r);
+    for (unsigned int j = 0; j < r; ++j)
+      b[j] = -step.rigid_load[j];
+    if (b.l2_norm() == 0)
+      return;
+    FullMatrix<double> A(r, edges.size());
+    for (unsigned int c = 0; c < edges.size(); ++c)
+      for (unsigned int j = 0; j < r; ++j)
+        A(j, c) = edges[c][j];
+    const Vector<double> q = nonnegative_least_squares(A, b);
+    Vector<double>       gap(b);
+    for (unsigned int j = 0; j < r; ++j)
+      for (unsigned int c = 0; c < edges.size(); ++c)
+        gap[j] -= A(j, c) * q[c];
+    if (gap.l2_norm() <= 1e-8 * b.l2_norm())
+      return;
+    std::ostringstream message;
+    message << what << ": no static equilibrium (load step " << step.step
+            << "): the bodies held by contact alone cannot be held by "
+               "contact forces within the friction cones (|p_t| <= mu p_n): "
+            << 100 * gap.l2_norm() / b.l2_norm()
+            << " % of the load's resultant along their free motions (";
+    for (unsigned int j = 0; j < r; ++j)
+      message << (j > 0 ? "; " : "") << step.rigid->names[j];
+    message << ") is left unbalanced, so the body slides or lifts off. Hold "
+               "it by a support, raise the friction coefficient, or change "
+               "the load.";
+    AssertThrow(false, ExcMessage(message.str()));
   }
 
 

@@ -17,16 +17,16 @@ namespace FuzzyContact
     const auto step = [&](const LoadStep &load_step) {
       return solve_step(problem, load_step, what);
     };
-    if (!problem.stages.empty())
-      return solve_in_load_steps(problem.g_initial,
-                                 problem.stages,
-                                 load_factor,
-                                 step);
+    AssertThrow(n_load_steps >= 1,
+                ExcMessage("The number of load steps must be at least 1."));
+    const std::vector<GapLoadStage> one_stage = {
+      GapLoadStage{problem.g_load, n_load_steps, problem.rigid_load}};
     return solve_in_load_steps(problem.g_initial,
-                               problem.g_load,
+                               problem.stages.empty() ? one_stage
+                                                      : problem.stages,
                                load_factor,
-                               n_load_steps,
-                               step);
+                               step,
+                               &problem.rigid);
   }
 
 

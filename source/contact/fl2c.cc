@@ -287,8 +287,17 @@ namespace FuzzyContact
         state.p = step.previous.p;
         if (state.p.size() != 2 * n)
           state.p.reinit(2 * n);
+        state.rigid = step.previous.rigid;
+        if (state.rigid.size() != step.n_motions())
+          state.rigid.reinit(step.n_motions());
         state.status.assign(n, ContactStatus::open);
         state.slip_sign.assign(n, 0);
+        AssertThrow(corrected || step.n_motions() == 0,
+                    ExcMessage(what + ": a body held by contact alone needs "
+                                      "FL2C's coarse correction (the "
+                                      "regulators alone do not move it): set "
+                                      "'coarse correction = active set' in "
+                                      "subsection FL2C."));
         start();
       }
 
@@ -304,11 +313,13 @@ namespace FuzzyContact
           monitor(0, interface_residual());
         for (unsigned int it = 1;; ++it)
           {
-            residual = working_residual();
+            residual =
+              std::max(working_residual(), equilibrium_residual(step, state.p));
             if (residual <= parameters.tolerance ||
                 (!corrected && it - last_check >= 16))
               {
-                residual   = check_interface();
+                residual   = std::max(check_interface(),
+                                    equilibrium_residual(step, state.p));
                 last_check = it;
               }
             if (residual <= parameters.tolerance)
@@ -344,9 +355,16 @@ namespace FuzzyContact
       start()
       {
         state.g = step.g_free;
+        add_rigid_gaps(step, state.rigid, state.g);
         for (unsigned int j = 0; j < 2 * n; ++j)
           if (state.p[j] != 0)
             add_column(j, state.p[j], true);
+        // A body held by contact alone whose load the forces do not balance
+        // yet has no position: the whole interface is the working set
+        // until the first coarse correction places it.
+        if (equilibrium_residual(step, state.p) > parameters.tolerance)
+          for (unsigned int k = 0; k < n; ++k)
+            join(k);
         // The gap scale: the largest free penetration, or the largest free
         // gap if nothing penetrates without contact forces.
         double g_scale = 0, gap = 0;
@@ -453,6 +471,7 @@ namespace FuzzyContact
       check_interface()
       {
         state.g = step.g_free;
+        add_rigid_gaps(step, state.rigid, state.g);
         for (const unsigned int j : rows)
           if (state.p[j] != 0)
             add_column(j, state.p[j], true);
@@ -474,6 +493,7 @@ namespace FuzzyContact
       {
         const Vector<double> kept = state.g;
         state.g                   = step.g_free;
+        add_rigid_gaps(step, state.rigid, state.g);
         for (const unsigned int j : rows)
           if (state.p[j] != 0)
             add_column(j, state.p[j], true);
@@ -563,6 +583,14 @@ namespace FuzzyContact
             local.previous.status[i]    = status;
             local.previous.slip_sign[i] = sign;
           }
+        const RigidMotions rigid =
+          step.n_motions() > 0 ? step.rigid->restricted(rows) : RigidMotions();
+        if (step.n_motions() > 0)
+          {
+            local.rigid          = &rigid;
+            local.rigid_load     = step.rigid_load;
+            local.previous.rigid = state.rigid;
+          }
         RestrictedFlexibility restricted(W, rows);
         ContactState          solved;
         try
@@ -576,9 +604,17 @@ namespace FuzzyContact
               {
                 solved = cold.solve(restricted, local, local_mu, what);
               }
-            catch (const ExceptionBase &)
+            catch (const ExceptionBase &e)
               {
-                return; // the regulators carry on alone
+                // The regulators carry on alone; they cannot move a body
+                // held by contact alone, though.
+                AssertThrow(step.n_motions() == 0,
+                            ExcMessage(what +
+                                       ": the coarse correction failed, and "
+                                       "without it a body held by contact "
+                                       "alone cannot be placed: " +
+                                       Input::message_of(e)));
+                return;
               }
           }
         for (unsigned int i = 0; i < 2 * s; ++i)
@@ -586,6 +622,7 @@ namespace FuzzyContact
             state.p[rows[i]] = solved.p[i];
             state.g[rows[i]] = solved.g[i];
           }
+        state.rigid = solved.rigid;
         prune();
       }
 

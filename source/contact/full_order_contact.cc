@@ -77,6 +77,29 @@ namespace FuzzyContact
         load_forces_.push_back(declared);
         reference_forces_.push_back(reference);
       }
+    // The free motions of the bodies held by contact alone: G = C_c R_c,
+    // and the resultant of each load along them.
+    unsigned int n_motions = 0;
+    for (const Component *component : components)
+      {
+        first_motion_.push_back(n_motions);
+        n_motions += component->free_motions().size();
+        std::vector<Vector<double>> e;
+        for (unsigned int l = 0; l < component->description().loads.size(); ++l)
+          e.push_back(component->rigid_load(l));
+        rigid_loads_.push_back(std::move(e));
+      }
+    rigid_.gaps.reinit(interface.n_rows(), n_motions);
+    for (unsigned int c = 0; c < components.size(); ++c)
+      for (unsigned int j = 0; j < components[c]->free_motions().size(); ++j)
+        {
+          Vector<double> g(interface.n_rows());
+          interface.gap_operator(c).vmult(g, components[c]->free_motions()[j]);
+          for (unsigned int i = 0; i < g.size(); ++i)
+            rigid_.gaps(i, first_motion_[c] + j) = g[i];
+          rigid_.names.push_back(components[c]->name() + ": " +
+                                 components[c]->free_motion_names()[j]);
+        }
   }
 
   void
@@ -234,9 +257,9 @@ namespace FuzzyContact
     // K = s K_ref: a force's response is K_ref^{-1} f / s; the forces that
     // impose a displacement are s times those of K_ref, so their response
     // does not change.
-    const double s = components[c]->description().loads[l].is_displacement ?
-                       1. :
-                       1. / factorized[c].scale;
+    const double s = components[c]->description().loads[l].is_displacement
+                       ? 1.
+                       : 1. / factorized[c].scale;
     return s * load_forces_[c][l] / reference_forces_[c][l];
   }
 
@@ -400,11 +423,38 @@ namespace FuzzyContact
   FullOrderContact::gap_load_stages()
   {
     if (load_stages_.empty())
-      return {GapLoadStage{load_gaps(), n_load_steps_}};
+      return {GapLoadStage{load_gaps(), n_load_steps_, rigid_load()}};
     std::vector<GapLoadStage> stages;
     for (const LoadStage &stage : load_stages_)
-      stages.push_back(GapLoadStage{load_gaps(&stage), stage.n_load_steps});
+      stages.push_back(GapLoadStage{load_gaps(&stage),
+                                    stage.n_load_steps,
+                                    rigid_load(&stage)});
     return stages;
+  }
+
+
+  Vector<double>
+  FullOrderContact::rigid_load(const LoadStage *stage) const
+  {
+    Vector<double> e(rigid_.size());
+    for (unsigned int c = 0; c < components.size(); ++c)
+      for (unsigned int l = 0; l < rigid_loads_[c].size(); ++l)
+        if (stage == nullptr || stage->ramps(c, l))
+          for (unsigned int j = 0; j < rigid_loads_[c][l].size(); ++j)
+            e[first_motion_[c] + j] += load_forces_[c][l] /
+                                       reference_forces_[c][l] *
+                                       rigid_loads_[c][l][j];
+    return e;
+  }
+
+
+  void
+  FullOrderContact::add_free_motions(const unsigned int    c,
+                                     const Vector<double> &a,
+                                     Vector<double>       &u) const
+  {
+    for (unsigned int j = 0; j < components[c]->free_motions().size(); ++j)
+      u.add(a[first_motion_[c] + j], components[c]->free_motions()[j]);
   }
 
 
@@ -430,7 +480,8 @@ namespace FuzzyContact
           start.previous = *last_state;
         last_g_previous = step.g_previous;
         return solver.solve(W, start, friction_, "full-order contact solver");
-      });
+      },
+      rigid_.size() > 0 ? &rigid_ : nullptr);
     last_state = state;
 
     ContactSolution solution = displacement_fields_
@@ -458,11 +509,19 @@ namespace FuzzyContact
     for (unsigned int j = 0; j < state.p.size(); ++j)
       if (state.p[j] != 0)
         prepare_column(j);
+    solution.rigid = state.rigid;
     solution.observed.resize(components.size());
     for (unsigned int c = 0; c < components.size(); ++c)
       for (unsigned int i = 0; i < observed_dofs[c].size(); ++i)
-        solution.observed[c].push_back(
-          observed_displacement(c, i, observed_dofs[c][i], state.p));
+        {
+          const types::global_dof_index dof = observed_dofs[c][i];
+          double u = observed_displacement(c, i, dof, state.p);
+          for (unsigned int j = 0; j < components[c]->free_motions().size();
+               ++j)
+            u += state.rigid[first_motion_[c] + j] *
+                 components[c]->free_motions()[j][dof];
+          solution.observed[c].push_back(u);
+        }
     return solution;
   }
 
@@ -499,6 +558,11 @@ namespace FuzzyContact
     };
     Vector<double> g_free = initial_gaps_;
     g_free.add(load_factor_, load_gaps());
+    // The equilibrium of the bodies held by contact alone at full load.
+    LoadStep full_load;
+    full_load.rigid      = rigid_.size() > 0 ? &rigid_ : nullptr;
+    full_load.rigid_load = rigid_load();
+    full_load.rigid_load *= load_factor_;
     for (unsigned int refinement = 0;; ++refinement)
       {
         solution.displacements.clear();
@@ -508,6 +572,7 @@ namespace FuzzyContact
             interface.gap_operator(c).Tvmult(rhs, final_state.p);
             rhs.add(load_factor_, load_vector(c));
             solution.displacements.push_back(accurate_solve(c, rhs));
+            add_free_motions(c, final_state.rigid, solution.displacements[c]);
           }
         solution.g = initial_gaps_;
         for (unsigned int c = 0; c < components.size(); ++c)
@@ -521,17 +586,31 @@ namespace FuzzyContact
                                                                 c_t);
         const double              worst = *std::max_element(r.begin(), r.end());
         solution.residual =
-          worst == 0 ? 0. : worst / residual_scale(final_state.p, g_free, c_n);
+          std::max(worst == 0
+                     ? 0.
+                     : worst / residual_scale(final_state.p, g_free, c_n),
+                   equilibrium_residual(full_load, final_state.p));
         if (solution.residual <= solver.parameters().tolerance ||
             refinement == 3)
           break;
         Vector<double> violation = solution.g;
         for (unsigned int k = 0; k < interface.n_nodes(); ++k)
           violation[tangential_row(k)] -= g_previous[tangential_row(k)];
-        final_state.p +=
-          solver.correction(W, final_state, friction_, violation);
+        Vector<double> imbalance = full_load.rigid_load;
+        for (unsigned int j = 0; j < rigid_.size(); ++j)
+          for (unsigned int i = 0; i < final_state.p.size(); ++i)
+            imbalance[j] += rigid_.gaps(i, j) * final_state.p[i];
+        const ContactState change = solver.correction(W,
+                                                      final_state,
+                                                      friction_,
+                                                      violation,
+                                                      full_load.rigid,
+                                                      imbalance);
+        final_state.p += change.p;
+        final_state.rigid += change.rigid;
       }
     solution.p      = final_state.p;
+    solution.rigid  = final_state.rigid;
     solution.status = final_state.status;
     solution.observed.resize(components.size());
     for (unsigned int c = 0; c < components.size(); ++c)

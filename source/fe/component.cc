@@ -150,6 +150,16 @@ namespace FuzzyContact
                        const PlaneModel            plane_model,
                        const unsigned int          n_refinements,
                        TimerOutput                *timer)
+      : Component(description, plane_model, n_refinements, timer, {})
+  {
+  }
+
+
+  Component::Component(const ComponentDescription     &description,
+                       const PlaneModel                plane_model,
+                       const unsigned int              n_refinements,
+                       TimerOutput                    *timer,
+                       const std::vector<std::string> &contact_faces)
       : description_(description)
       , plane_model_(plane_model)
       , fe_(FE_Q<2>(description.fe_degree), 2)
@@ -175,7 +185,7 @@ namespace FuzzyContact
       if (timer != nullptr)
         scope = std::make_unique<TimerOutput::Scope>(*timer, "mesh and DoFs");
       make_mesh(n_refinements);
-      setup_dofs();
+      setup_dofs(contact_faces);
     }
     {
       std::unique_ptr<TimerOutput::Scope> scope;
@@ -306,9 +316,13 @@ namespace FuzzyContact
 
 
   void
-  Component::setup_dofs()
+  Component::setup_dofs(const std::vector<std::string> &contact_faces)
   {
     dof_handler_.distribute_dofs(fe_);
+    support_points_.resize(dof_handler_.n_dofs());
+    DoFTools::map_dofs_to_support_points(*mapping_,
+                                         dof_handler_,
+                                         support_points_);
 
     dof_directions_.resize(dof_handler_.n_dofs());
     std::vector<types::global_dof_index> dofs(fe_.n_dofs_per_cell());
@@ -366,6 +380,8 @@ namespace FuzzyContact
             displacement_fields_.push_back(std::move(field));
           }
       }
+    if (!contact_faces.empty())
+      pin_free_motions(contact_faces);
     constraints_.close();
 
     DynamicSparsityPattern dsp(dof_handler_.n_dofs());
@@ -374,11 +390,6 @@ namespace FuzzyContact
                                     constraints_,
                                     /*keep_constrained_dofs=*/false);
     sparsity_pattern_.copy_from(dsp);
-
-    support_points_.resize(dof_handler_.n_dofs());
-    DoFTools::map_dofs_to_support_points(*mapping_,
-                                         dof_handler_,
-                                         support_points_);
   }
 
 
@@ -502,24 +513,6 @@ namespace FuzzyContact
             << ", " << p[1] << ").";
     AssertThrow(false, ExcMessage(message.str()));
     return {{0, 0}};
-  }
-
-
-  std::vector<Vector<double>>
-  Component::rigid_body_motions() const
-  {
-    const Point<2> centre =
-      0.5 * (description_.lower_left + description_.upper_right);
-    std::vector<Vector<double>> motions(3, Vector<double>(n_dofs()));
-    for (unsigned int i = 0; i < n_dofs(); ++i)
-      {
-        const unsigned int c = dof_directions_[i];
-        const Point<2>    &x = support_points_[i];
-        motions[0][i]        = (c == 0 ? 1. : 0.);
-        motions[1][i]        = (c == 1 ? 1. : 0.);
-        motions[2][i] = (c == 0 ? -(x[1] - centre[1]) : (x[0] - centre[0]));
-      }
-    return motions;
   }
 
 

@@ -7,7 +7,6 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/lapack_full_matrix.h>
 
 #include <cmath>
 #include <sstream>
@@ -173,58 +172,4 @@ namespace FuzzyContact
     return f;
   }
 
-
-  // The held DoFs' rows of the three rigid-body motions (the rotation
-  // scaled by the body's size) span all three unless a motion moves no held
-  // DoF: the eigenvector of the smallest eigenvalue of R_h^T R_h is then
-  // that motion.
-  std::string
-  Component::free_rigid_motion() const
-  {
-    const std::vector<Vector<double>> motions = rigid_body_motions();
-    const double                      size =
-      description_.lower_left.distance(description_.upper_right);
-    LAPACKFullMatrix<double> G(3, 3);
-    for (unsigned int i = 0; i < n_dofs(); ++i)
-      if (is_constrained(i))
-        for (unsigned int a = 0; a < 3; ++a)
-          for (unsigned int b = 0; b < 3; ++b)
-            G(a, b) += motions[a][i] * motions[b][i] /
-                       ((a == 2 ? size : 1.) * (b == 2 ? size : 1.));
-    const double       scale = std::max(1., G.frobenius_norm());
-    Vector<double>     eigenvalues;
-    FullMatrix<double> eigenvectors;
-    G.compute_eigenvalues_symmetric(-1.,
-                                    1e-10 * scale,
-                                    1e-14 * scale,
-                                    eigenvalues,
-                                    eigenvectors);
-    if (eigenvalues.size() == 0)
-      return "";
-    const Point<2> centre =
-      0.5 * (description_.lower_left + description_.upper_right);
-    std::ostringstream free;
-    // (The eigenvector's sign is arbitrary: x first, then y, positive.)
-    const double sign =
-      (eigenvectors(0, 0) < -1e-12 ||
-       (std::abs(eigenvectors(0, 0)) <= 1e-12 && eigenvectors(1, 0) < 0))
-        ? -1.
-        : 1.;
-    const double tx = sign * eigenvectors(0, 0), ty = sign * eigenvectors(1, 0),
-                 r = sign * eigenvectors(2, 0);
-    if (std::abs(r) > 1e-6)
-      {
-        // Translation (tx, ty) plus rotation r / size about the centre is a
-        // rotation about centre + size (-ty, tx) / r.
-        const Point<2> pole(centre[0] - size * ty / r,
-                            centre[1] + size * tx / r);
-        free << "rotation about (" << pole[0] << ", " << pole[1] << ")";
-      }
-    else
-      free << "translation along (" << (std::abs(tx) < 1e-12 ? 0. : tx) << ", "
-           << (std::abs(ty) < 1e-12 ? 0. : ty) << ")";
-    if (eigenvalues.size() > 1)
-      free << " (and " << eigenvalues.size() - 1 << " more)";
-    return free.str();
-  }
 } // namespace FuzzyContact

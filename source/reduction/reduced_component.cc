@@ -510,8 +510,24 @@ namespace FuzzyContact
         r.stiffness_proportional.push_back(
           component.description().loads[l].is_displacement);
       }
-    r.observed_dofs = observed_dofs;
-    r.observation   = rows(observed_dofs);
+    r.observed_dofs                      = observed_dofs;
+    r.observation                        = rows(observed_dofs);
+    const std::vector<Vector<double>> &R = component.free_motions();
+    r.rigid_gaps.reinit(gap_operator.m(), R.size());
+    r.rigid_observation.reinit(observed_dofs.size(), R.size());
+    for (unsigned int j = 0; j < R.size(); ++j)
+      {
+        Vector<double> g(gap_operator.m());
+        gap_operator.vmult(g, R[j]);
+        for (unsigned int i = 0; i < g.size(); ++i)
+          r.rigid_gaps(i, j) = g[i];
+        for (unsigned int i = 0; i < observed_dofs.size(); ++i)
+          r.rigid_observation(i, j) = R[j][observed_dofs[i]];
+        r.motion_names.push_back(component.name() + ": " +
+                                 component.free_motion_names()[j]);
+      }
+    for (unsigned int l = 0; l < component.description().loads.size(); ++l)
+      r.rigid_loads.push_back(component.rigid_load(l));
     return r;
   }
 } // namespace FuzzyContact

@@ -209,6 +209,33 @@ namespace FuzzyContact
         compute_blocks(variable[c]);
         load_forces.push_back(variable[c].matrices.reference_forces);
       }
+    // The free motions of the bodies held by contact alone, every
+    // component's after the previous one's.
+    unsigned int n_motions = 0;
+    for (const Part &part : variable)
+      {
+        first_motion.push_back(n_motions);
+        n_motions += part.matrices.rigid_gaps.n();
+      }
+    problem_.rigid.gaps.reinit(m, n_motions);
+    for (unsigned int c = 0; c < variable.size(); ++c)
+      {
+        const ReducedComponentMatrices &r = variable[c].matrices;
+        AssertThrow(r.rigid_gaps.n() == 0 ||
+                      (r.rigid_gaps.m() == m &&
+                       r.motion_names.size() == r.rigid_gaps.n() &&
+                       r.rigid_loads.size() == r.loads.size() &&
+                       r.rigid_observation.m() == r.observed_dofs.size()),
+                    ExcMessage("ReducedContactModel: the free motions of a "
+                               "component do not fit its matrices."));
+        for (unsigned int j = 0; j < r.rigid_gaps.n(); ++j)
+          {
+            for (unsigned int i = 0; i < m; ++i)
+              problem_.rigid.gaps(i, first_motion[c] + j) = r.rigid_gaps(i, j);
+            problem_.rigid.names.push_back(r.motion_names[j]);
+          }
+      }
+    problem_.rigid_load.reinit(n_motions);
     flexibility_         = std::make_shared<Flexibility>(*this);
     problem_.flexibility = flexibility_;
     flexibility_changed();
@@ -353,14 +380,33 @@ namespace FuzzyContact
   }
 
 
+  Vector<double>
+  ReducedContactModel::rigid_load(const LoadStage *stage) const
+  {
+    Vector<double> e(problem_.rigid.size());
+    for (unsigned int c = 0; c < variable.size(); ++c)
+      {
+        const ReducedComponentMatrices &r = variable[c].matrices;
+        for (unsigned int j = 0; j < r.rigid_gaps.n(); ++j)
+          for (unsigned int l = 0; l < r.rigid_loads.size(); ++l)
+            if (stage == nullptr || stage->ramps(c, l))
+              e[first_motion[c] + j] +=
+                load_forces[c][l] / r.reference_forces[l] * r.rigid_loads[l][j];
+      }
+    return e;
+  }
+
+
   void
   ReducedContactModel::assemble_load_gaps()
   {
-    problem_.g_load = load_gaps(nullptr);
+    problem_.g_load     = load_gaps(nullptr);
+    problem_.rigid_load = rigid_load(nullptr);
     problem_.stages.clear();
     for (const LoadStage &stage : load_stages)
-      problem_.stages.push_back(
-        GapLoadStage{load_gaps(&stage), stage.n_load_steps});
+      problem_.stages.push_back(GapLoadStage{load_gaps(&stage),
+                                             stage.n_load_steps,
+                                             rigid_load(&stage)});
     problem_.check();
   }
 
@@ -518,6 +564,7 @@ namespace FuzzyContact
     s.status     = state.status;
     s.iterations = state.iterations;
     s.residual   = state.residual;
+    s.rigid      = state.rigid;
     s.compute_totals();
     s.observed.resize(variable.size());
     for (unsigned int c = 0; c < variable.size(); ++c)
@@ -537,7 +584,11 @@ namespace FuzzyContact
                   if (state.p[j] != 0)
                     u += part->observation_flexibility(row, j) * state.p[j];
               }
-          s.observed[c].push_back(u / scales[c]);
+          u /= scales[c];
+          const ReducedComponentMatrices &r = variable[c].matrices;
+          for (unsigned int j = 0; j < r.rigid_observation.n(); ++j)
+            u += r.rigid_observation(row, j) * state.rigid[first_motion[c] + j];
+          s.observed[c].push_back(u);
         }
     return s;
   }

@@ -16,21 +16,33 @@ namespace FuzzyContact
   {
     for (const ComponentDescription &d : scene_.components)
       {
+        // A body its supports leave free is held by contact alone: it is
+        // pinned off its contact faces (fe/component.h), and the contact
+        // solvers find its rigid-body motion with the contact forces.
+        std::vector<std::string> contact_faces;
+        for (const ContactPairDescription &pair : scene_.contact_pairs)
+          {
+            if (pair.slave_component == d.name)
+              contact_faces.push_back(pair.slave_face);
+            if (pair.master_component == d.name)
+              contact_faces.push_back(pair.master_face);
+          }
         owned.push_back(std::make_unique<Component>(d,
                                                     scene_.plane_model,
                                                     mesh_refinements,
-                                                    timer));
+                                                    timer,
+                                                    contact_faces));
         components_.push_back(owned.back().get());
         const std::string free = owned.back()->free_rigid_motion();
-        AssertThrow(free.empty(),
+        AssertThrow(free.empty() || !contact_faces.empty(),
                     ExcMessage("Component " + d.name +
                                ": its clamps and supports leave a rigid-body "
                                "motion free (" +
                                free +
-                               "); a body held by contact alone is not "
-                               "handled. Clamp a face, or add supports "
-                               "('supports', with 'fixed components') that "
-                               "hold it in x, in y and against rotation."));
+                               "), and no contact pair can hold it. Clamp a "
+                               "face, or add supports ('supports', with "
+                               "'fixed components') that hold it in x, in y "
+                               "and against rotation, or a contact pair."));
       }
     const auto scope = timer_section(timer, "contact interface");
     interface_       = std::make_unique<ContactInterface>(scene_,

@@ -48,6 +48,10 @@ namespace FuzzyContact
       part.reference_forces       = r.reference_forces;
       part.stiffness_proportional = r.stiffness_proportional;
       part.observed_dofs          = r.observed_dofs;
+      part.rigid_gaps             = r.rigid_gaps;
+      part.rigid_loads            = r.rigid_loads;
+      part.rigid_observation      = r.rigid_observation;
+      part.motion_names           = r.motion_names;
       part.observation = block(r.observation, 0, r.observation.m(), begin, n);
       return part;
     }
@@ -464,8 +468,12 @@ namespace FuzzyContact
       }
     r.reference_forces       = m.nominal_matrices.reference_forces;
     r.stiffness_proportional = m.nominal_matrices.stiffness_proportional;
-    r.observed_dofs    = m.nominal_matrices.observed_dofs;
-    r.observation      = on_basis(m.O_T, m.O_psi);
+    r.rigid_gaps             = m.nominal_matrices.rigid_gaps;
+    r.rigid_loads            = m.nominal_matrices.rigid_loads;
+    r.rigid_observation      = m.nominal_matrices.rigid_observation;
+    r.motion_names           = m.nominal_matrices.motion_names;
+    r.observed_dofs          = m.nominal_matrices.observed_dofs;
+    r.observation            = on_basis(m.O_T, m.O_psi);
     return r;
   }
 
@@ -648,6 +656,15 @@ namespace FuzzyContact
                                " was built on another MPI rank; its "
                                "displacement field is not available here."));
         models[c]->reduced->expand(q[c], u[c]);
+      }
+    // The free motions of the bodies held by contact alone.
+    unsigned int first = 0;
+    for (unsigned int c = 0; c < models.size(); ++c)
+      {
+        const Component &component = bodies.component(c);
+        for (unsigned int j = 0; j < component.free_motions().size(); ++j)
+          u[c].add(s.rigid[first + j], component.free_motions()[j]);
+        first += component.free_motions().size();
       }
     return u;
   }

@@ -40,6 +40,15 @@
 // max_iterations pass, it throws with the iteration count and the residual
 // reached. A numerically singular active system (a reduced W of low rank)
 // is solved in the least-squares sense with a pseudo-inverse.
+//
+// Bodies held by contact alone (contact_problem.h) add the amplitudes of
+// their free motions to the unknowns of every linear system and their
+// equilibrium to its equations (status_system.h), and the equilibrium's
+// residual to the stopping test. Such a body has no position before its
+// contact holds it, so phase 1 is replaced by the start "every node
+// closed" (the primal-dual iterations then open the nodes in tension); and
+// a load that no contact forces in the friction cones can balance is
+// refused before any iteration (check_equilibrium()).
 
 #ifndef fuzzycontact_contact_active_set_solver_h
 #define fuzzycontact_contact_active_set_solver_h
@@ -97,18 +106,22 @@ namespace FuzzyContact
           const std::string         &what) const;
 
     /**
-     * For the statuses of @p state, the change of the forces that removes
-     * the constraint violations @p violation (per row: g_n of closed nodes,
-     * g_t - g_t,previous of sticking nodes; other rows are ignored), i.e.
-     * the solution of the same linear system as in an iteration with the
-     * right-hand side -violation. Used to refine a solution whose gaps were
-     * recomputed more accurately than W is known.
+     * For the statuses of @p state, the change of the forces (and of the
+     * free motions' amplitudes, with @p rigid) that removes the constraint
+     * violations @p violation (per row: g_n of closed nodes, g_t -
+     * g_t,previous of sticking nodes; other rows are ignored) and the
+     * equilibrium defect @p imbalance (G^T p + lambda e, with @p rigid),
+     * i.e. the solution of the same linear system as in an iteration with
+     * the right-hand side -violation. Used to refine a solution whose gaps
+     * were recomputed more accurately than W is known.
      */
-    Vector<double>
+    ContactState
     correction(FlexibilityOperator       &W,
                const ContactState        &state,
                const std::vector<double> &mu,
-               const Vector<double>      &violation) const;
+               const Vector<double>      &violation,
+               const RigidMotions        *rigid     = nullptr,
+               const Vector<double>      &imbalance = Vector<double>()) const;
 
     const ActiveSetParameters &
     parameters() const;

@@ -45,6 +45,23 @@
 // the force that would close it), as max_k (|phi_n| + |phi_t|) divided by
 // the force scale max(sum_k p_n, max_k c_n |g_free,n|). It is zero exactly at
 // a solution, and independent of the units.
+//
+// Bodies held by contact alone (fe/component.h: their supports leave
+// rigid-body motions free) add the amplitudes a of their free motions R as
+// unknowns: the gaps are
+//
+//     g(p, a) = g_initial + lambda g_load + W p + G a,   G = sum_c C_c R_c,
+//
+// with W that of the pinned bodies, and each free motion adds the
+// equilibrium of its body along it,
+//
+//     G^T p + lambda e = 0,   e = R^T f,
+//
+// (the contact forces balance the resultant of the external load). Its
+// residual is measured per motion relative to sum_j |G_j p_j| + |lambda
+// e|. A load no admissible contact forces can balance (p_n >= 0, |p_t| <=
+// mu p_n: a block on a slope steeper than its friction angle) has no
+// static solution; check_equilibrium() says so before a solver tries.
 
 #ifndef fuzzycontact_contact_contact_problem_h
 #define fuzzycontact_contact_contact_problem_h
@@ -140,14 +157,38 @@ namespace FuzzyContact
   };
 
   /**
+   * The free rigid-body motions of the bodies held by contact alone (see
+   * the top of this file).
+   */
+  struct RigidMotions
+  {
+    /**
+     * G: the change of every gap row per unit amplitude of each free
+     * motion [m/m] (n_rows x n_motions; no columns if every body is held by
+     * its supports).
+     */
+    FullMatrix<double> gaps;
+    /** Each motion in words, with its body ("Block: translation ..."). */
+    std::vector<std::string> names;
+
+    unsigned int
+    size() const;
+    /** The same motions seen by the rows @p rows only. */
+    RigidMotions
+    restricted(const std::vector<unsigned int> &rows) const;
+  };
+
+  /**
    * One stage of a load history as the gaps see it: the change of the
    * gaps under the stage's loads at full value (load factor 1), applied in
-   * n_steps equal steps.
+   * n_steps equal steps; and the resultant e of its loads along the free
+   * rigid-body motions (empty if there are none).
    */
   struct GapLoadStage
   {
     Vector<double> g_load;
     unsigned int   n_steps = 1;
+    Vector<double> rigid_load;
   };
 
   /**
@@ -179,6 +220,12 @@ namespace FuzzyContact
     std::vector<GapLoadStage> stages;
     /** Friction coefficient of every node. */
     std::vector<double> mu;
+    /**
+     * The free motions of the bodies held by contact alone, and the
+     * resultant e of the external load at load factor 1 along them.
+     */
+    RigidMotions   rigid;
+    Vector<double> rigid_load;
 
     unsigned int
     n_nodes() const;
@@ -212,8 +259,10 @@ namespace FuzzyContact
     std::vector<ContactStatus> status;
     /** +1 or -1: direction of the friction force of slipping nodes. */
     std::vector<int> slip_sign;
-    unsigned int     iterations = 0;
-    double           residual   = 0;
+    /** Amplitudes of the free rigid-body motions (RigidMotions) [m]. */
+    Vector<double> rigid;
+    unsigned int   iterations = 0;
+    double         residual   = 0;
   };
 
   /** Everything a load step needs to know. */
@@ -231,6 +280,16 @@ namespace FuzzyContact
     Vector<double> g_previous;
     /** The converged state of the previous step (all open at first). */
     ContactState previous;
+    /**
+     * The free rigid-body motions (null if there are none) and the
+     * resultant of this step's load along them, lambda e.
+     */
+    const RigidMotions *rigid = nullptr;
+    Vector<double>      rigid_load;
+
+    /** The number of free rigid-body motions. */
+    unsigned int
+    n_motions() const;
   };
 
   /**
@@ -245,7 +304,8 @@ namespace FuzzyContact
     const Vector<double>                                &g_initial,
     const std::vector<GapLoadStage>                     &stages,
     const double                                         load_factor,
-    const std::function<ContactState(const LoadStep &)> &solve_step);
+    const std::function<ContactState(const LoadStep &)> &solve_step,
+    const RigidMotions                                  *rigid = nullptr);
 
   /**
    * The one-stage history: the load in @p n_steps equal increments up to
@@ -293,6 +353,44 @@ namespace FuzzyContact
                  const Vector<double>                      &g_free,
                  const std::function<double(unsigned int)> &c_n);
 
+  /** g += G a: the gaps' change under the free motions' amplitudes. */
+  void
+  add_rigid_gaps(const LoadStep       &step,
+                 const Vector<double> &a,
+                 Vector<double>       &g);
+
+  /**
+   * The relative residual of the equilibrium G^T p + lambda e = 0 of the
+   * bodies held by contact alone (see the top of this file); 0 if there
+   * are none.
+   */
+  double
+  equilibrium_residual(const LoadStep &step, const Vector<double> &p);
+
+  /**
+   * Throws, naming @p what and the free motions, if no contact forces in
+   * the friction cones (p_n >= 0, |p_t| <= mu p_n) of the nodes can balance
+   * the step's load on the bodies held by contact alone: there is then no
+   * static solution (the body slides or lifts off). Nothing to check
+   * without such bodies. A bound-constrained least-squares problem
+   * (Lawson and Hanson's NNLS) on the cones' edges decides it.
+   */
+  void
+  check_equilibrium(const LoadStep            &step,
+                    const std::vector<double> &mu,
+                    const std::string         &what);
+
+  /**
+   * Throws, naming @p what and the motion, if neither the step's load nor
+   * the contact forces @p p act along a free motion of a body held by
+   * contact alone: its position is then not determined (any position that
+   * does not penetrate solves the problem).
+   */
+  void
+  check_motions_determined(const LoadStep       &step,
+                           const Vector<double> &p,
+                           const std::string    &what);
+
   /**
    * DoFs whose displacements a solver reports, per component: the
    * observations of a study (study/observations.h) ask for them, and every
@@ -321,8 +419,13 @@ namespace FuzzyContact
      * i-th observed DoF of component c (see ObservedDofs).
      */
     std::vector<std::vector<double>> observed;
-    unsigned int                     iterations   = 0;
-    unsigned int                     n_load_steps = 1;
+    /**
+     * Amplitudes of the free rigid-body motions of the bodies held by
+     * contact alone [m], in the order of the problem's RigidMotions.
+     */
+    Vector<double> rigid;
+    unsigned int   iterations   = 0;
+    unsigned int   n_load_steps = 1;
     /** Relative complementarity residual of the final state. */
     double residual = 0;
     /** Wall time of the solve [s] (see each solver for what it covers). */

@@ -12,8 +12,9 @@
 // where f_c = sum_l F_l f_l is the component's load, each load l a total
 // force F_l times its consistent nodal forces. It is solved by block
 // elimination: every K_c is factorised once by a sparse Cholesky (CHOLMOD,
-// SparseCholesky; K_c is symmetric positive definite, floating bodies being
-// refused), or that factorisation is shared with whoever already made it
+// SparseCholesky; K_c is symmetric positive definite, a body held by
+// contact alone being pinned, fe/component.h), or that factorisation is
+// shared with whoever already made it
 // (set_factorisation_source(): the study's reduced models are built from
 // the same one), and the primal-dual active set method
 // (ActiveSetSolver) works on the Schur complement W = sum_c C_c K_c^{-1}
@@ -199,6 +200,17 @@ namespace FuzzyContact
     /** The load history as the gaps see it (one stage per load stage). */
     std::vector<GapLoadStage>
     gap_load_stages();
+    /**
+     * The resultant of the loads (of @p stage only, if given) at load
+     * factor 1 along the free motions of the bodies held by contact alone.
+     */
+    Vector<double>
+    rigid_load(const LoadStage *stage = nullptr) const;
+    /** u += R_c a: component c's free motions at their amplitudes in a. */
+    void
+    add_free_motions(const unsigned int    c,
+                     const Vector<double> &a,
+                     Vector<double>       &u) const;
     /** The displacement of DoF @p dof of component @p c for forces @p p. */
     double
     observed_displacement(const unsigned int            c,
@@ -228,6 +240,13 @@ namespace FuzzyContact
     Vector<double>                   initial_gaps_;
     std::vector<double>              friction_;
     ObservedDofs                     observed_dofs;
+    // The free motions of the bodies held by contact alone (G = C_c R_c,
+    // contact_problem.h), the first of each component's among them, and
+    // the resultant of each load l of component c along them, at its
+    // reference force.
+    RigidMotions                             rigid_;
+    std::vector<unsigned int>                first_motion_;
+    std::vector<std::vector<Vector<double>>> rigid_loads_;
 
     // Per component: the factorisation of K_ref, the moduli it was made
     // with, the current scale s (K = s K_ref), K_ref^{-1} f_l at the

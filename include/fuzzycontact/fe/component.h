@@ -21,6 +21,19 @@
 // response elsewhere. The forces scale with the zone moduli (a stiffer body
 // needs more force for the same displacement); set_zone_materials() updates
 // them.
+//
+// A body whose clamps and supports leave rigid-body motions free (a body
+// held by contact alone: a block resting on a slope, a roller under a
+// force) has a singular stiffness. Built for a contact problem (with its
+// contact faces given), such a body is pinned: one DoF per free motion,
+// off its contact and loaded faces, is held like a support, so that the
+// stiffness K~ of the pinned body is positive definite. The free motions R
+// (one field each, zero on the DoFs supports hold) are kept: for forces g
+// in equilibrium along them (R^T g = 0), u = K~^{-1} g solves K u = g (the
+// pins' rows follow from the others', since R^T K = 0 and the pins' rows of
+// R are independent), and the body's displacement is u + R a. The
+// amplitudes a are unknowns of the contact problem, with the equilibrium
+// R^T (f + C^T p) = 0 as their equations (contact/contact_problem.h).
 
 #ifndef fuzzycontact_fe_component_h
 #define fuzzycontact_fe_component_h
@@ -70,6 +83,17 @@ namespace FuzzyContact
               const PlaneModel            plane_model,
               const unsigned int          n_refinements = 0,
               TimerOutput                *timer         = nullptr);
+    /**
+     * As above, for a contact problem: @p contact_faces are the component's
+     * faces in contact pairs. A body its supports do not hold is then
+     * pinned (see the top of this file), with its pins off those faces;
+     * otherwise this is the constructor above.
+     */
+    Component(const ComponentDescription     &description,
+              const PlaneModel                plane_model,
+              const unsigned int              n_refinements,
+              TimerOutput                    *timer,
+              const std::vector<std::string> &contact_faces);
 
     const std::string &
     name() const;
@@ -97,7 +121,7 @@ namespace FuzzyContact
     boundary_length(const types::boundary_id id) const;
     const AffineConstraints<double> &
     constraints() const;
-    /** True for DoFs held by a clamp or a support. */
+    /** True for DoFs held by a clamp, a support or a pin. */
     bool
     is_constrained(const types::global_dof_index dof) const;
     /** True for DoFs held at a non-zero prescribed displacement. */
@@ -195,7 +219,31 @@ namespace FuzzyContact
     std::string
     free_rigid_motion() const;
 
+    /**
+     * The rigid-body motions the supports leave free, if the body was
+     * pinned (constructed with its contact faces): one field each, of unit
+     * size (a rotation of 1/size radians about the pole, size the bounding
+     * box's diagonal), zero on the DoFs the supports hold. Empty for a body
+     * its supports hold.
+     */
+    const std::vector<Vector<double>> &
+    free_motions() const;
+    /** Each free motion in words ("translation along (1, 0)", ...). */
+    const std::vector<std::string> &
+    free_motion_names() const;
+    /** The pinned DoFs, one per free motion. */
+    const std::vector<types::global_dof_index> &
+    pinned_dofs() const;
+    /**
+     * R^T f_l: the resultant of load @p l at its reference force along each
+     * free motion.
+     */
+    Vector<double>
+    rigid_load(const unsigned int l) const;
+
   private:
+    void
+    pin_free_motions(const std::vector<std::string> &avoid);
     void
     make_mesh(const unsigned int n_refinements);
     void
@@ -206,8 +254,9 @@ namespace FuzzyContact
                            const std::vector<types::global_dof_index> &dofs);
     void
     update_displacement_loads();
+    /** DoFs, supports, and pins if @p contact_faces are given. */
     void
-    setup_dofs();
+    setup_dofs(const std::vector<std::string> &contact_faces);
     void
     assemble_zone_matrices();
     void
@@ -243,6 +292,10 @@ namespace FuzzyContact
     std::vector<Vector<double>>              displacement_fields_;
     std::vector<std::vector<Vector<double>>> displacement_zone_loads_;
     std::vector<bool>                        prescribed_;
+    // A pinned body's free motions, their names and its pins.
+    std::vector<Vector<double>>          free_motions_;
+    std::vector<std::string>             free_motion_names_;
+    std::vector<types::global_dof_index> pinned_dofs_;
   };
 } // namespace FuzzyContact
 

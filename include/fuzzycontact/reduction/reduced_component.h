@@ -82,6 +82,17 @@ namespace FuzzyContact
     /** DoFs whose displacements the solvers report, and V's rows there. */
     std::vector<types::global_dof_index> observed_dofs;
     FullMatrix<double>                   observation;
+    /**
+     * A body held by contact alone (fe/component.h): its free motions R as
+     * the contact sees them (C_c R, rows of the interface x motions), the
+     * resultant R^T f_l of each load at its reference force, R's rows at the
+     * observed DoFs, and the motions' names. Exact (R does not depend on
+     * the materials); no columns for a body its supports hold.
+     */
+    FullMatrix<double>          rigid_gaps;
+    std::vector<Vector<double>> rigid_loads;
+    FullMatrix<double>          rigid_observation;
+    std::vector<std::string>    motion_names;
 
     /** For Utilities::MPI::broadcast (the ranks exchange these blocks). */
     template <class Archive>
@@ -89,7 +100,8 @@ namespace FuzzyContact
     serialize(Archive &archive, const unsigned int)
     {
       archive &stiffness &gap_operator &loads &reference_forces
-        &stiffness_proportional &observed_dofs &observation;
+        &stiffness_proportional &observed_dofs &observation &rigid_gaps
+          &rigid_loads &rigid_observation &motion_names;
     }
   };
 

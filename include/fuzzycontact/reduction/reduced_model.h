@@ -205,11 +205,17 @@ namespace FuzzyContact
     // The sum above over every load, or over the loads of @p stage only.
     Vector<double>
     load_gaps(const LoadStage *stage) const;
+    // The loads' resultant along the free motions of the bodies held by
+    // contact alone (of @p stage's loads only, if given), at load factor 1.
+    Vector<double>
+    rigid_load(const LoadStage *stage) const;
     // F_l / F_ref,l of load l of component c.
     double
     load_factor(const unsigned int c, const unsigned int l) const;
 
-    std::vector<Part>                variable, fixed;
+    std::vector<Part> variable, fixed;
+    // The first free motion of each component in the problem's.
+    std::vector<unsigned int>        first_motion;
     std::vector<double>              scales;
     std::vector<std::vector<double>> load_forces;
     std::vector<LoadStage>           load_stages;
