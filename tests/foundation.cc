@@ -1306,6 +1306,41 @@ TEST(MeshFiles, BadMeshesAreRefusedWithTheFileAndTheKey)
 // degree 2, every node of the arc lies on the circle; and the full-order
 // Hertz contact matches a = sqrt(4 P R / (pi E*)) within one slave-node
 // spacing and p0 = 2 P / (pi a) within 2 % at the shipped mesh.
+namespace
+{
+  // Solves a Hertz scene (a roller on a block, frictionless) by the
+  // full-order model and checks the contact half-width to one slave-node
+  // spacing and the peak pressure (averaged over three nodes) to 2 %
+  // against Hertz's values for the computed contact force.
+  ContactSolution
+  expect_hertz(const Scene &scene, ContactScene &bodies)
+  {
+    const auto    &arc = scene.components[0].mesh.arcs.begin()->second;
+    FullOrderModel full(bodies, ObservedDofs(2));
+    full.set_state(SceneState(scene));
+    const ContactSolution s = full.solve();
+    const auto &roller = scene.components[0], &block = scene.components[1];
+    const HertzTheory::Cylinder hertz{
+      arc.radius,
+      HertzTheory::contact_modulus(roller.zones[0].youngs_modulus,
+                                   roller.zones[0].poissons_ratio,
+                                   block.zones[0].youngs_modulus,
+                                   block.zones[0].poissons_ratio),
+      s.normal_force / roller.thickness};
+    const auto zone =
+      HertzTheory::contact_zone(HertzTheory::profile(bodies.interface(),
+                                                     s,
+                                                     0,
+                                                     Point<2>(0, 0),
+                                                     roller.thickness));
+    EXPECT_NEAR(zone.half_width, hertz.half_width(), zone.node_spacing);
+    EXPECT_NEAR(zone.peak_pressure / hertz.peak_pressure(), 1., 0.02);
+    // Frictionless: no tangential force; force balance of the nodal forces.
+    EXPECT_NEAR(s.tangential_force, 0., 1e-10 * s.normal_force);
+    return s;
+  }
+} // namespace
+
 TEST(Validation, HertzRollerOnBlock)
 {
   const Scene scene = Scene::read(source_dir + "/prm/hertz.prm");
@@ -1318,27 +1353,24 @@ TEST(Validation, HertzRollerOnBlock)
                 arc.radius,
                 1e-12 * arc.radius);
 
-  FullOrderModel full(bodies, ObservedDofs(2));
-  full.set_state(SceneState(scene));
-  const ContactSolution s = full.solve();
-  const auto &roller = scene.components[0], &block = scene.components[1];
-  const HertzTheory::Cylinder hertz{
-    arc.radius,
-    HertzTheory::contact_modulus(roller.zones[0].youngs_modulus,
-                                 roller.zones[0].poissons_ratio,
-                                 block.zones[0].youngs_modulus,
-                                 block.zones[0].poissons_ratio),
-    s.normal_force / roller.thickness};
-  const auto zone =
-    HertzTheory::contact_zone(HertzTheory::profile(bodies.interface(),
-                                                   s,
-                                                   0,
-                                                   Point<2>(0, 0),
-                                                   roller.thickness));
-  EXPECT_NEAR(zone.half_width, hertz.half_width(), zone.node_spacing);
-  EXPECT_NEAR(zone.peak_pressure / hertz.peak_pressure(), 1., 0.02);
-  // Frictionless: no tangential force; force balance of the nodal forces.
-  EXPECT_NEAR(s.tangential_force, 0., 1e-10 * s.normal_force);
+  expect_hertz(scene, bodies);
+}
+
+// The same roller under load control (prm/hertz-load.prm): a force on its
+// top face, which is held in x only, so that the contact alone holds the
+// roller vertically and against rotation (its two free motions are solved
+// with the contact forces). The contact force is the applied one by
+// equilibrium, and Hertz's half-width and peak pressure follow as under
+// displacement control.
+TEST(Validation, HertzRollerOnBlockUnderLoadControl)
+{
+  const Scene  scene = Scene::read(source_dir + "/prm/hertz-load.prm");
+  ContactScene bodies(scene, 0);
+  ASSERT_EQ(bodies.component(0).free_motions().size(), 2u);
+  const ContactSolution s = expect_hertz(scene, bodies);
+  EXPECT_NEAR(s.normal_force,
+              scene.components[0].loads[0].total_force,
+              1e-10 * s.normal_force);
 }
 
 

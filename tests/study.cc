@@ -23,6 +23,8 @@
 
 #include "test_utilities.h"
 #include <cmath>
+#include <fstream>
+#include <sstream>
 
 using namespace FuzzyContact;
 using namespace FuzzyContact::Testing;
@@ -401,4 +403,150 @@ TEST(ReducedOrderModel, RefusesAStateItWasNotBuiltFor)
               reduced.set_state(state);
             }).find("The reduced model of component P1 has no reanalysis"),
             std::string::npos);
+}
+
+
+// ----------------------------------------------------------------------------
+// Bodies held by contact alone
+// ----------------------------------------------------------------------------
+
+namespace
+{
+  // The outputs of @p scene solved by the full-order model, the exact
+  // reduced solver and FL2C on modes + static correction (mesh as read).
+  std::vector<std::vector<double>>
+  three_ways(const Scene &s, const std::vector<std::string> &names)
+  {
+    ContactScene       bodies(s, 0);
+    const Observations outputs(names, bodies);
+    const SceneState   state(s);
+    FullOrderModel     full(bodies, outputs.dofs());
+    full.set_state(state);
+    ReducedOrderModel reduced(bodies,
+                              component_modes(bodies, ModalParameters()),
+                              outputs.dofs(),
+                              std::vector<VaryingQuantity>(),
+                              ReducedModelSettings());
+    reduced.set_state(state);
+    FL2CParameters fl2c;
+    fl2c.tolerance = 1e-10;
+    return {outputs.values(full.solve()),
+            outputs.values(reduced.solve(ActiveSetSolver())),
+            outputs.values(reduced.solve(FL2CSolver(fl2c)))};
+  }
+
+  // @p text with the block's friction coefficient set to @p mu.
+  Scene
+  slope_with_friction(const double mu)
+  {
+    std::ifstream      in(source_dir + "/prm/slope.prm");
+    std::ostringstream text;
+    text << in.rdbuf();
+    Scene s = Scene::read_from_string(replace(text.str(),
+                                              "set friction coefficient = 0.5",
+                                              "set friction coefficient = " +
+                                                std::to_string(mu)),
+                                      source_dir + "/prm/slope.prm");
+    return s;
+  }
+} // namespace
+
+// A block on a 20-degree slope, pressed by a vertical force F on its top
+// face, held by nothing but its contact (prm/slope.prm: its three
+// rigid-body motions are unknowns). Statics: it stays put if mu >= tan(20
+// deg) = 0.364, and then the contact forces are N = F cos(20 deg) and T = F
+// sin(20 deg) whatever the pressure distribution (every model, to
+// round-off); with less friction there is no static solution, which every
+// model says before it tries.
+TEST(FloatingBodies, BlockOnASlopeAgainstStatics)
+{
+  const double theta = 20 * M_PI / 180, F = 1e4;
+  for (const double mu : {0.5, 1.02 * std::tan(theta)})
+    {
+      const auto v = three_ways(slope_with_friction(mu),
+                                {"Fn", "Ft", "Block.node(0.2, 0.15).uy"});
+      for (const auto &w : v)
+        {
+          EXPECT_NEAR(w[0], F * std::cos(theta), 1e-10 * F) << "mu = " << mu;
+          EXPECT_NEAR(std::abs(w[1]), F * std::sin(theta), 1e-10 * F)
+            << "mu = " << mu;
+          EXPECT_NEAR(w[2], v[0][2], 1e-8 * std::abs(v[0][2]));
+        }
+    }
+  // The moment: the contact forces on the block (p_n n + p_t tau at each
+  // slave node, n and tau the slope's) balance the load's, F (0, -1) at the
+  // middle of the block's top face, about the origin.
+  const Scene    s = slope_with_friction(0.5);
+  ContactScene   bodies(s, 0);
+  FullOrderModel full(bodies, ObservedDofs(2));
+  full.set_state(SceneState(s));
+  const ContactSolution solution = full.solve();
+  double                moment   = 0;
+  for (unsigned int k = 0; k < solution.n_nodes(); ++k)
+    {
+      const ContactNode &node = bodies.interface().nodes()[k];
+      const Tensor<1, 2> f =
+        solution.p_n(k) * node.normal + solution.p_t(k) * node.tangent;
+      moment += node.slave.position[0] * f[1] - node.slave.position[1] * f[0];
+    }
+  const double   c = std::cos(theta), sn = std::sin(theta);
+  const Point<2> corner(0.15, 0.05 + 0.15 * std::tan(theta));
+  const Point<2> top =
+    corner + Point<2>(0.05 * c - 0.05 * sn, 0.05 * sn + 0.05 * c);
+  moment += top[0] * (-F);
+  EXPECT_NEAR(moment, 0., 1e-10 * F * 0.4);
+  EXPECT_GT(solution.count(ContactStatus::stick), 0u);
+  for (const double mu : {0.3, 0.98 * std::tan(theta)})
+    {
+      const std::string m = error_of([&] {
+        three_ways(slope_with_friction(mu), {"Fn"});
+      });
+      EXPECT_NE(m.find("no static equilibrium"), std::string::npos)
+        << "mu = " << mu << ": " << m;
+      EXPECT_NE(m.find("Block: rotation about"), std::string::npos) << m;
+    }
+}
+
+// The contact patch test (prm/patch-test.prm, matching meshes) with the
+// upper block pressed by a pressure p on its top instead of a prescribed
+// displacement: held in x by its symmetry line only, it floats vertically.
+// The exact solution is the uniform uniaxial stress sigma_yy = -p
+// (plane strain): the contact force p w t, the interface's u_y = -p H_2 /
+// E', the top's u_y = -p (H_1 + H_2) / E' (E' = E / (1 - nu^2)) and the
+// lateral expansion u_x = nu (1 + nu) p x / E at the top right corner.
+TEST(FloatingBodies, PatchTestUnderAPressure)
+{
+  std::ifstream      in(source_dir + "/prm/patch-test.prm");
+  std::ostringstream text;
+  text << in.rdbuf();
+  std::string t  = replace(text.str(),
+                          "subdivisions       = 7, 3",
+                          "subdivisions       = 5, 3");
+  t              = replace(t,
+              "  set supports           = press, symmetry\n"
+                           "  subsection Support press\n"
+                           "    set face             = top\n"
+                           "    set fixed components = y\n"
+                           "    set displacement     = 0, -1e-5\n"
+                           "  end\n",
+              "  set supports           = symmetry\n"
+                           "  set loads              = press\n"
+                           "  subsection Load press\n"
+                           "    set face     = top\n"
+                           "    set pressure = 2e7\n"
+                           "  end\n");
+  const Scene  s = Scene::read_from_string(t, source_dir + "/prm/patch.prm");
+  const double p = 2e7, E = 210e9, nu = 0.3, H = 0.05, w = 0.1;
+  const double Ep = E / (1 - nu * nu);
+  for (const auto &v : three_ways(s,
+                                  {"Fn",
+                                   "Lower.node(0.1, 0.05).uy",
+                                   "Upper.node(0.1, 0.1).uy",
+                                   "Upper.node(0.1, 0.1).ux"}))
+    {
+      EXPECT_NEAR(v[0], p * w, 1e-10 * p * w);
+      EXPECT_NEAR(v[1], -p * H / Ep, 1e-9 * p * H / Ep);
+      EXPECT_NEAR(v[2], -2 * p * H / Ep, 1e-9 * p * H / Ep);
+      EXPECT_NEAR(v[3], nu * (1 + nu) * p * w / E, 1e-9 * p * H / Ep);
+    }
 }

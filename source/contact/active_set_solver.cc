@@ -109,12 +109,17 @@ namespace FuzzyContact
                           return s == ContactStatus::open;
                         }))
           {
-            // A body held by contact alone has no position before its
-            // contact holds it: start from every node closed.
-            if (step.n_motions() > 0)
-              std::fill(status.begin(), status.end(), ContactStatus::stick);
+            // A body held by contact alone: the frictionless start from
+            // normal forces that balance its load (it then keeps the
+            // equilibrium); if friction must hold it, from every node
+            // closed.
+            Vector<double>            p0(2 * n);
+            const std::vector<double> frictionless(n, 0.);
+            if (step.n_motions() == 0 ||
+                admissible_forces(step, frictionless, p0))
+              frictionless_start(p0);
             else
-              frictionless_start();
+              std::fill(status.begin(), status.end(), ContactStatus::stick);
           }
         complete_statuses();
 
@@ -224,20 +229,39 @@ namespace FuzzyContact
       }
 
       // Phase 1: the frictionless normal problem by Lawson and Hanson's
-      // active set method. Its closed nodes stick (slip without friction).
+      // active set method, from the normal forces of @p p0 (zero, or forces
+      // that balance the load on the bodies held by contact alone, whose
+      // equilibrium every step then keeps: the amplitudes of their free
+      // motions are the multipliers of that constraint). Its closed nodes
+      // stick (slip without friction).
       void
-      frictionless_start()
+      frictionless_start(const Vector<double> &p0)
       {
         std::vector<bool>         closed(n, false), blocked(n, false);
         std::vector<unsigned int> closed_list;
-        Vector<double>            p(n);
+        Vector<double>            p(n), a(step.n_motions());
         std::vector<double>       gn(n);
-        const auto                update_gaps = [&]() {
+        for (unsigned int k = 0; k < n; ++k)
+          if (p0[normal_row(k)] > 0)
+            {
+              p[k]      = p0[normal_row(k)];
+              closed[k] = true;
+              closed_list.push_back(k);
+            }
+        if (!closed_list.empty())
+          solve_on_closed_set(closed, p, a);
+        const auto update_gaps = [&]() {
+          closed_list.clear();
+          for (unsigned int k = 0; k < n; ++k)
+            if (closed[k])
+              closed_list.push_back(k);
           for (unsigned int k = 0; k < n; ++k)
             {
               gn[k] = step.g_free[normal_row(k)];
               for (const unsigned int j : closed_list)
                 gn[k] += W(normal_row(k), normal_row(j)) * p[j];
+              for (unsigned int j = 0; j < a.size(); ++j)
+                gn[k] += step.rigid->gaps(normal_row(k), j) * a[j];
             }
         };
         update_gaps();
@@ -273,11 +297,7 @@ namespace FuzzyContact
               }
             closed[deepest]               = true;
             const Vector<double> p_before = p;
-            solve_on_closed_set(closed, p);
-            closed_list.clear();
-            for (unsigned int k = 0; k < n; ++k)
-              if (closed[k])
-                closed_list.push_back(k);
+            solve_on_closed_set(closed, p, a);
             update_gaps();
             // A node that could not stay closed is not tried again until the
             // closed set changes otherwise.
@@ -302,42 +322,46 @@ namespace FuzzyContact
             }
       }
 
-      // The inner loop of phase 1: solve on the closed set; step back to the
-      // boundary while a force would become negative, and open the nodes
-      // whose force reached zero.
+      // The inner loop of phase 1: solve on the closed set (with the free
+      // motions' amplitudes @p a and the equilibrium, if any); step back to
+      // the boundary while a force would become negative, and open the
+      // nodes whose force reached zero.
       void
-      solve_on_closed_set(std::vector<bool> &closed, Vector<double> &p)
+      solve_on_closed_set(std::vector<bool> &closed,
+                          Vector<double>    &p,
+                          Vector<double>    &a)
       {
-        std::vector<unsigned int> closed_list, columns;
+        std::vector<unsigned int> closed_list;
+        const std::vector<double> frictionless(n, 0.);
         while (true)
           {
+            std::vector<ContactStatus> slips(n, ContactStatus::open);
             closed_list.clear();
-            columns.clear();
             for (unsigned int k = 0; k < n; ++k)
               if (closed[k])
                 {
                   closed_list.push_back(k);
-                  columns.push_back(normal_row(k));
+                  slips[k] = ContactStatus::slip;
                 }
-            W.prepare(columns);
             const unsigned int size = closed_list.size();
-            FullMatrix<double> A(size, size);
+            const StatusSystem system(W,
+                                      slips,
+                                      std::vector<int>(n, 1),
+                                      frictionless,
+                                      step.rigid);
             Vector<double>     b(size);
             for (unsigned int r = 0; r < size; ++r)
-              {
-                b[r] = -step.g_free[normal_row(closed_list[r])];
-                for (unsigned int c = 0; c < size; ++c)
-                  A(r, c) =
-                    W(normal_row(closed_list[r]), normal_row(closed_list[c]));
-              }
-            const Vector<double> z     = solve_dense(A, b);
+              b[r] = -step.g_free[normal_row(closed_list[r])];
+            const Vector<double> x     = system.solve(b, step.rigid_load);
+            const Vector<double> a_new = system.amplitudes(x);
             double               alpha = 1;
             int                  limit = -1;
             for (unsigned int r = 0; r < size; ++r)
-              if (z[r] <= 0)
+              if (x[r] <= 0)
                 {
-                  const unsigned int k        = closed_list[r];
-                  const double       fraction = p[k] / (p[k] - z[r]);
+                  const unsigned int k = closed_list[r];
+                  const double       fraction =
+                    p[k] - x[r] > 0 ? p[k] / (p[k] - x[r]) : 0.;
                   if (fraction < alpha)
                     {
                       alpha = fraction;
@@ -347,8 +371,10 @@ namespace FuzzyContact
             for (unsigned int r = 0; r < size; ++r)
               {
                 const unsigned int k = closed_list[r];
-                p[k] += alpha * (z[r] - p[k]);
+                p[k] += alpha * (x[r] - p[k]);
               }
+            for (unsigned int j = 0; j < a.size(); ++j)
+              a[j] += alpha * (a_new[j] - a[j]);
             if (limit < 0)
               return;
             // The node that limited the step, and any other whose force

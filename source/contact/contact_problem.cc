@@ -467,18 +467,31 @@ namespace FuzzyContact
   } // namespace
 
 
-  void
-  check_equilibrium(const LoadStep            &step,
+  bool
+  admissible_forces(const LoadStep            &step,
                     const std::vector<double> &mu,
-                    const std::string         &what)
+                    Vector<double>            &p,
+                    double                    *unbalanced)
   {
     const unsigned int r = step.n_motions();
-    if (r == 0)
-      return;
+    p.reinit(2 * mu.size());
+    if (unbalanced != nullptr)
+      *unbalanced = 0;
+    Vector<double> b(r);
+    for (unsigned int j = 0; j < r; ++j)
+      b[j] = -step.rigid_load[j];
+    if (r == 0 || b.l2_norm() == 0)
+      return true;
     // The edges of node k's friction cone: p_n = 1, p_t = +-mu (one edge
     // without friction), as resultants along the free motions, normalised.
-    const FullMatrix<double>        &G = step.rigid->gaps;
-    std::vector<std::vector<double>> edges;
+    const FullMatrix<double> &G = step.rigid->gaps;
+    struct Edge
+    {
+      unsigned int node;
+      double       t, norm;
+    };
+    std::vector<Edge>                edges;
+    std::vector<std::vector<double>> columns;
     for (unsigned int k = 0; k < mu.size(); ++k)
       for (const double t : {1., -1.})
         {
@@ -493,33 +506,48 @@ namespace FuzzyContact
             }
           if (norm == 0)
             continue;
+          norm = std::sqrt(norm);
           for (double &e : a)
-            e /= std::sqrt(norm);
-          edges.push_back(std::move(a));
+            e /= norm;
+          edges.push_back(Edge{k, t, norm});
+          columns.push_back(std::move(a));
         }
-    Vector<double> b(r);
-    for (unsigned int j = 0; j < r; ++j)
-      b[j] = -step.rigid_load[j];
-    if (b.l2_norm() == 0)
-      return;
     FullMatrix<double> A(r, edges.size());
     for (unsigned int c = 0; c < edges.size(); ++c)
       for (unsigned int j = 0; j < r; ++j)
-        A(j, c) = edges[c][j];
-    const Vector<double> q = nonnegative_least_squares(A, b);
-    Vector<double>       gap(b);
-    for (unsigned int j = 0; j < r; ++j)
-      for (unsigned int c = 0; c < edges.size(); ++c)
-        gap[j] -= A(j, c) * q[c];
-    if (gap.l2_norm() <= 1e-8 * b.l2_norm())
+        A(j, c) = columns[c][j];
+    const Vector<double> q   = nonnegative_least_squares(A, b);
+    Vector<double>       gap = b;
+    for (unsigned int c = 0; c < edges.size(); ++c)
+      {
+        for (unsigned int j = 0; j < r; ++j)
+          gap[j] -= A(j, c) * q[c];
+        const unsigned int k = edges[c].node;
+        p[normal_row(k)] += q[c] / edges[c].norm;
+        p[tangential_row(k)] += edges[c].t * mu[k] * q[c] / edges[c].norm;
+      }
+    if (unbalanced != nullptr)
+      *unbalanced = gap.l2_norm() / b.l2_norm();
+    return gap.l2_norm() <= 1e-8 * b.l2_norm();
+  }
+
+
+  void
+  check_equilibrium(const LoadStep            &step,
+                    const std::vector<double> &mu,
+                    const std::string         &what)
+  {
+    Vector<double> p;
+    double         unbalanced = 0;
+    if (admissible_forces(step, mu, p, &unbalanced))
       return;
     std::ostringstream message;
     message << what << ": no static equilibrium (load step " << step.step
             << "): the bodies held by contact alone cannot be held by "
                "contact forces within the friction cones (|p_t| <= mu p_n): "
-            << 100 * gap.l2_norm() / b.l2_norm()
+            << 100 * unbalanced
             << " % of the load's resultant along their free motions (";
-    for (unsigned int j = 0; j < r; ++j)
+    for (unsigned int j = 0; j < step.n_motions(); ++j)
       message << (j > 0 ? "; " : "") << step.rigid->names[j];
     message << ") is left unbalanced, so the body slides or lifts off. Hold "
                "it by a support, raise the friction coefficient, or change "

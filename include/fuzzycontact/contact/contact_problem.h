@@ -381,6 +381,19 @@ namespace FuzzyContact
                     const std::string         &what);
 
   /**
+   * Forces @p p in the friction cones of the nodes (coefficients @p mu)
+   * that balance the step's load on the bodies held by contact alone, at
+   * most one per free motion and cone edge (a basic solution of the NNLS
+   * problem of check_equilibrium()); false if there are none, with the
+   * unbalanced fraction of the load's resultant in @p unbalanced.
+   */
+  bool
+  admissible_forces(const LoadStep            &step,
+                    const std::vector<double> &mu,
+                    Vector<double>            &p,
+                    double                    *unbalanced = nullptr);
+
+  /**
    * Throws, naming @p what and the motion, if neither the step's load nor
    * the contact forces @p p act along a free motion of a body held by
    * contact alone: its position is then not determined (any position that
