@@ -455,7 +455,18 @@ namespace FuzzyContact
         for (unsigned int k = 0; k < n && !(murty && changed); ++k)
           if (r[k] > tol * scale)
             {
-              const auto [s, d] = predict(state, k);
+              auto [s, d] = predict(state, k);
+              // With bodies held by contact alone, a slipping node does not
+              // reverse its slip in one iteration, but sticks first: the
+              // free motions answer the friction forces of all slipping
+              // nodes at once, and whole-interface reversals would follow
+              // each other (a roller rocking from one side to the other).
+              if (step.n_motions() > 0 && s == ContactStatus::slip &&
+                  status[k] == ContactStatus::slip && d != sign[k])
+                {
+                  s = ContactStatus::stick;
+                  d = 0;
+                }
               if (s != status[k] || (s == ContactStatus::slip && d != sign[k]))
                 {
                   new_status[k] = s;
@@ -539,7 +550,53 @@ namespace FuzzyContact
   {
     AssertDimension(W.size(), 2 * mu.size());
     AssertDimension(step.g_free.size(), 2 * mu.size());
-    return ActiveSetMethod(W, step, mu, parameters_, what).solve();
+    if (step.n_motions() == 0 || *std::max_element(mu.begin(), mu.end()) == 0)
+      return ActiveSetMethod(W, step, mu, parameters_, what).solve();
+    try
+      {
+        return ActiveSetMethod(W, step, mu, parameters_, what).solve();
+      }
+    catch (const ExceptionBase &e)
+      {
+        const std::string message = Input::message_of(e);
+        // A load no contact forces can balance has no solution at all.
+        if (message.find("no static equilibrium") != std::string::npos ||
+            message.find("is not determined") != std::string::npos)
+          throw;
+        // A body held by contact alone turns in answer to the friction
+        // forces of all slipping nodes at once, which can keep the
+        // primal-dual iterations from settling; the same step is solved
+        // again with the friction coefficients ramped up from 0, each
+        // solve started from the previous one's statuses.
+        const unsigned int  n_ramp = 8;
+        LoadStep            ramped = step;
+        std::vector<double> m(mu.size());
+        ContactState        state;
+        unsigned int        iterations = 0;
+        try
+          {
+            for (unsigned int i = 1; i <= n_ramp; ++i)
+              {
+                for (unsigned int k = 0; k < mu.size(); ++k)
+                  m[k] = mu[k] * i / n_ramp;
+                state =
+                  ActiveSetMethod(W, ramped, m, parameters_, what).solve();
+                iterations += state.iterations;
+                ramped.previous = state;
+              }
+          }
+        catch (const ExceptionBase &)
+          {
+            AssertThrow(false,
+                        ExcMessage(message +
+                                   " (Solved again with the friction "
+                                   "coefficients ramped up from 0 in " +
+                                   std::to_string(n_ramp) +
+                                   " steps: no better.)"));
+          }
+        state.iterations = iterations;
+        return state;
+      }
   }
 
 
