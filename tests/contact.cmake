@@ -74,3 +74,23 @@ fuzzycontact_program_test(step-3.diagnostic_solver_fails
   "-DEDIT2_FROM=set coarse correction = active set"
   "-DEDIT2_TO=set coarse correction = none"
   "-DMESSAGE= fl2c_modes +failed: fl2c_modes: the fuzzy regulators did not converge in 20000 iterations \\(load step 1\\); complementarity residual.*\n reduced_exact_modes +[-0-9]")
+
+# A body held by contact alone (prm/step-3-slope.prm: a block on a slope):
+# every solver carries statics' N = F cos 20 and T = F sin 20, and the
+# report gives the block's rigid-body motion. With too little friction the
+# block slides: no static equilibrium, refused before anything is written.
+fuzzycontact_program_test(step-3.slope step-3 slope
+  -DEXPECT=success
+  -DPRM=${CMAKE_SOURCE_DIR}/prm/step-3-slope.prm
+  -DOUTPUT=step-3-slope-output
+  -DEXTRA_FILES=${CMAKE_SOURCE_DIR}/prm/meshes
+  "-DMESSAGE= full_order +9.39693e\\+03 +3.42020e\\+03.*\n reduced_exact +9.39693e\\+03 +3.42020e\\+03.*\n fl2c_corrected +9.39693e\\+03 +3.42020e\\+03.* held by contact alone.* Block: rotation about")
+fuzzycontact_program_test(step-3.bad_input.block_slides step-3 slope
+  -DEXPECT=failure
+  -DPRM=${CMAKE_SOURCE_DIR}/prm/step-3-slope.prm
+  -DOUTPUT=step-3-slope-output
+  -DEXTRA_FILES=${CMAKE_SOURCE_DIR}/prm/meshes
+  -DEDIT_FILE=scene
+  "-DEDIT_FROM=set friction coefficient = 0.5"
+  "-DEDIT_TO=set friction coefficient = 0.3"
+  "-DMESSAGE=step-3-slope.prm: full-order contact solver: no static equilibrium \\(load step 1\\): the bodies held by contact alone cannot be held.*Block: translation along \\(1, 0\\).*slides or lifts off")

@@ -1503,7 +1503,7 @@ TEST(LoadStages, OneStageIsTheProportionalLoadBitForBit)
   problem.mu        = plain_bodies.interface().friction_coefficients();
   const ActiveSetSolver solver;
   const ContactState    c = solver.solve(problem, 1., 3, "test");
-  problem.stages          = {GapLoadStage{problem.g_load, 3}};
+  problem.stages          = {GapLoadStage{problem.g_load, 3, {}}};
   const ContactState d    = solver.solve(problem, 1., 7, "test");
   EXPECT_EQ(c.iterations, d.iterations); // 3 steps, not 7
   EXPECT_EQ(c.status, d.status);
@@ -1524,25 +1524,24 @@ TEST(LoadStages, StagesHoldEarlierLoadsAndCarryTheState)
   second[1]    = 3;
   std::vector<LoadStep>     seen;
   std::vector<ContactState> returned;
-  const ContactState        last =
-    solve_in_load_steps(g_initial,
-                        {GapLoadStage{first, 2}, GapLoadStage{second, 3}},
-                        0.5,
-                        [&](const LoadStep &step) {
-                          seen.push_back(step);
-                          ContactState state;
-                          state.g = step.g_free;
-                          state.g[1] += 0.25 * step.step;
-                          state.p.reinit(2);
-                          state.p[0]       = step.step;
-                          state.status     = {step.stage == 0
-                                                ? ContactStatus::stick
-                                                : ContactStatus::slip};
-                          state.slip_sign  = {int(step.step)};
-                          state.iterations = 1;
-                          returned.push_back(state);
-                          return state;
-                        });
+  const ContactState        last = solve_in_load_steps(
+    g_initial,
+    {GapLoadStage{first, 2, {}}, GapLoadStage{second, 3, {}}},
+    0.5,
+    [&](const LoadStep &step) {
+      seen.push_back(step);
+      ContactState state;
+      state.g = step.g_free;
+      state.g[1] += 0.25 * step.step;
+      state.p.reinit(2);
+      state.p[0]       = step.step;
+      state.status     = {step.stage == 0 ? ContactStatus::stick
+                                                 : ContactStatus::slip};
+      state.slip_sign  = {int(step.step)};
+      state.iterations = 1;
+      returned.push_back(state);
+      return state;
+    });
   ASSERT_EQ(seen.size(), 5u);
   EXPECT_EQ(last.iterations, 5u);
   const double expected_normal[]     = {0.5, 0, 0, 0, 0};

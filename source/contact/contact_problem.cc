@@ -252,7 +252,7 @@ namespace FuzzyContact
                 ExcMessage("The number of load steps must be at least 1."));
     AssertDimension(g_load.size(), g_initial.size());
     return solve_in_load_steps(g_initial,
-                               {GapLoadStage{g_load, n_steps}},
+                               {GapLoadStage{g_load, n_steps, {}}},
                                load_factor,
                                solve_step);
   }

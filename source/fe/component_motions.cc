@@ -163,6 +163,8 @@ namespace FuzzyContact
         free_motions_.push_back(std::move(field));
         free_motion_names_.push_back(
           describe(v(0, j), v(1, j), v(2, j), description_));
+        free_motion_angles_.push_back(std::abs(v(2, j)) > 1e-6 ? v(2, j) / size
+                                                               : 0.);
       }
 
     // DoFs the pins must avoid: those of the contact faces and the loads.
@@ -241,6 +243,34 @@ namespace FuzzyContact
   Component::free_motion_names() const
   {
     return free_motion_names_;
+  }
+
+
+  const std::vector<double> &
+  Component::free_motion_angles() const
+  {
+    return free_motion_angles_;
+  }
+
+
+  Vector<double>
+  Component::rigid_part(const Vector<double> &u) const
+  {
+    const unsigned int       r = free_motions_.size();
+    LAPACKFullMatrix<double> normal(r, r);
+    Vector<double>           a(r);
+    for (unsigned int i = 0; i < r; ++i)
+      {
+        a[i] = free_motions_[i] * u;
+        for (unsigned int j = 0; j < r; ++j)
+          normal(i, j) = free_motions_[i] * free_motions_[j];
+      }
+    if (r > 0)
+      {
+        normal.compute_lu_factorization();
+        normal.solve(a);
+      }
+    return a;
   }
 
 

@@ -60,6 +60,34 @@ namespace FuzzyContact
                           reference.outputs[x],
                           reference.outputs[y]);
     }
+
+    // The rigid-body part of the full-order displacement of each body held
+    // by contact alone, per free motion: {"m": translation} or {"rad":
+    // rotation about the pole its name gives}. Empty without such bodies or
+    // without the full-order fields.
+    nlohmann::json
+    rigid_parts(const ContactCase &c)
+    {
+      nlohmann::json   parts = nlohmann::json::object();
+      const SolverRun &ref   = c.runs[0];
+      if (c.free_motions.empty() || c.bodies == nullptr ||
+          ref.fields.size() != c.bodies->n_components())
+        return parts;
+      for (unsigned int b = 0; b < c.bodies->n_components(); ++b)
+        {
+          const Component     &body = c.bodies->component(b);
+          const Vector<double> a    = body.rigid_part(ref.fields[b]);
+          for (unsigned int j = 0; j < a.size(); ++j)
+            {
+              const std::string name =
+                body.name() + ": " + body.free_motion_names()[j];
+              const double angle = body.free_motion_angles()[j];
+              parts[name] = angle != 0 ? nlohmann::json{{"rad", a[j] * angle}}
+                                       : nlohmann::json{{"m", a[j]}};
+            }
+        }
+      return parts;
+    }
   } // namespace
 
 
@@ -73,7 +101,11 @@ namespace FuzzyContact
       , pairs(bodies.scene().contact_pairs)
       , n_dofs(bodies.n_dofs())
       , n_nodes(bodies.interface().n_nodes())
+      , bodies(&bodies)
   {
+    for (unsigned int c = 0; c < bodies.n_components(); ++c)
+      for (const std::string &motion : bodies.component(c).free_motion_names())
+        free_motions.push_back(bodies.component(c).name() + ": " + motion);
     std::ostringstream text;
     const Scene       &s = bodies.scene();
     for (unsigned int c = 0; c < s.components.size(); ++c)
@@ -230,6 +262,18 @@ namespace FuzzyContact
           << s.count(ContactStatus::slip) << " slip); full_order warm re-solve "
           << Format::scientific(c.full_order_warm_time, 2)
           << " s (same stiffness: factorisations and columns of W reused)\n";
+      const nlohmann::json rigid = rigid_parts(c);
+      if (!rigid.empty())
+        {
+          out << " held by contact alone, their free motions solved with the "
+                 "contact (full_order; the rigid-body part of the "
+                 "displacement, a least-squares fit over the body's nodes):";
+          for (const auto &[name, value] : rigid.items())
+            out << " " << name << " by "
+                << Format::scientific(value.begin().value().get<double>(), 3)
+                << " " << value.begin().key() << ";";
+          out << "\n";
+        }
       if (!c.beam_theory.empty())
         out << " " << c.beam_theory << "\n";
       out << " time: one solve (full_order cold, with its factorisations; "
@@ -256,7 +300,9 @@ namespace FuzzyContact
       j["n_dofs_per_component"]   = c.n_dofs;
       j["n_slave_nodes"]          = c.n_nodes;
       j["full_order_warm_time_s"] = c.full_order_warm_time;
-      j["solvers"]                = nlohmann::json::array();
+      if (!c.free_motions.empty())
+        j["rigid_body_part_full_order"] = rigid_parts(c);
+      j["solvers"]     = nlohmann::json::array();
       const auto value = [&](const SolverRun &run, const std::string &name) {
         return run.outputs[o.index(name)];
       };

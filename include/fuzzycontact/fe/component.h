@@ -231,6 +231,21 @@ namespace FuzzyContact
     /** Each free motion in words ("translation along (1, 0)", ...). */
     const std::vector<std::string> &
     free_motion_names() const;
+    /**
+     * The angle [rad] of each free motion per unit amplitude: 0 for a
+     * translation (its amplitude is its displacement [m]), else its
+     * rotation about the pole its name gives.
+     */
+    const std::vector<double> &
+    free_motion_angles() const;
+    /**
+     * The amplitudes of the free motions that fit the displacement field
+     * @p u best, in the least-squares sense over all DoFs: the rigid-body
+     * part of the body's displacement (the solvers' own amplitudes are
+     * those of the pins, whose choice is arbitrary).
+     */
+    Vector<double>
+    rigid_part(const Vector<double> &u) const;
     /** The pinned DoFs, one per free motion. */
     const std::vector<types::global_dof_index> &
     pinned_dofs() const;
@@ -295,6 +310,7 @@ namespace FuzzyContact
     // A pinned body's free motions, their names and its pins.
     std::vector<Vector<double>>          free_motions_;
     std::vector<std::string>             free_motion_names_;
+    std::vector<double>                  free_motion_angles_;
     std::vector<types::global_dof_index> pinned_dofs_;
   };
 } // namespace FuzzyContact

@@ -73,6 +73,14 @@ namespace FuzzyContact
     std::vector<ContactPairDescription> pairs;
     std::vector<unsigned int>           n_dofs;
     unsigned int                        n_nodes;
+    /**
+     * The free rigid-body motions of the bodies held by contact alone
+     * ("Block: translation along (1, 0)"), whose amplitudes the solvers
+     * find with the contact forces.
+     */
+    std::vector<std::string> free_motions;
+    /** The bodies (for the rigid-body part of a displacement field). */
+    const ContactScene *bodies = nullptr;
     /** runs[0] is the full-order reference. */
     std::vector<SolverRun> runs;
     double                 full_order_warm_time = 0;
