@@ -504,6 +504,13 @@ TEST(FloatingBodies, BlockOnASlopeAgainstStatics)
       EXPECT_NE(m.find("no static equilibrium"), std::string::npos)
         << "mu = " << mu << ": " << m;
       EXPECT_NE(m.find("Block: rotation about"), std::string::npos) << m;
+      // The friction it needs is statics' tan(theta).
+      const auto needed = m.find(", would be ");
+      ASSERT_NE(needed, std::string::npos) << m;
+      EXPECT_NEAR(std::atof(m.c_str() + needed + 11),
+                  std::tan(theta),
+                  1e-6 * std::tan(theta))
+        << m;
     }
 }
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 namespace FuzzyContact
@@ -541,6 +542,27 @@ namespace FuzzyContact
     double         unbalanced = 0;
     if (admissible_forces(step, mu, p, &unbalanced))
       return;
+    // The friction the body would need: the least factor s such that the
+    // coefficients s mu can hold it (bisection on a logarithmic scale), if
+    // one up to 1e3 can; none if it lifts off (or has no friction at all).
+    const auto feasible = [&](const double s) {
+      std::vector<double> scaled = mu;
+      for (double &m : scaled)
+        m *= s;
+      return admissible_forces(step, scaled, p);
+    };
+    const double mu_max = *std::max_element(mu.begin(), mu.end());
+    double       needed = 0;
+    if (mu_max > 0 && feasible(1e3))
+      {
+        double low = 1, high = 1e3;
+        for (unsigned int i = 0; i < 60 && high / low > 1 + 1e-12; ++i)
+          {
+            const double middle             = std::sqrt(low * high);
+            (feasible(middle) ? high : low) = middle;
+          }
+        needed = high * mu_max;
+      }
     std::ostringstream message;
     message << what << ": no static equilibrium (load step " << step.step
             << "): the bodies held by contact alone cannot be held by "
@@ -549,9 +571,17 @@ namespace FuzzyContact
             << " % of the load's resultant along their free motions (";
     for (unsigned int j = 0; j < step.n_motions(); ++j)
       message << (j > 0 ? "; " : "") << step.rigid->names[j];
-    message << ") is left unbalanced, so the body slides or lifts off. Hold "
-               "it by a support, raise the friction coefficient, or change "
-               "the load.";
+    message << ") is left unbalanced, so the body ";
+    if (needed > 0)
+      message << "slides: it needs friction coefficients "
+              << std::setprecision(9) << needed / mu_max
+              << " times the present ones (the largest, " << mu_max
+              << ", would be " << needed
+              << "). Raise the friction coefficient, hold it by a support, "
+                 "or change the load.";
+    else
+      message << "slides or lifts off, whatever the friction. Hold it by a "
+                 "support, or change the load.";
     AssertThrow(false, ExcMessage(message.str()));
   }
 
