@@ -87,9 +87,12 @@ namespace FuzzyContact
     {
       AssertThrow(std::isfinite(value),
                   ExcMessage(what + " must be a finite number."));
-      std::ostringstream message;
-      message << what << " must be positive, got " << value << ".";
-      AssertThrow(value > 0, ExcMessage(message.str()));
+      if (!(value > 0))
+        {
+          std::ostringstream message;
+          message << what << " must be positive, got " << value << ".";
+          AssertThrow(false, ExcMessage(message.str()));
+        }
       return value;
     }
 
@@ -99,9 +102,12 @@ namespace FuzzyContact
     {
       AssertThrow(std::isfinite(value),
                   ExcMessage(what + " must be a finite number."));
-      std::ostringstream message;
-      message << what << " must not be negative, got " << value << ".";
-      AssertThrow(value >= 0, ExcMessage(message.str()));
+      if (!(value >= 0))
+        {
+          std::ostringstream message;
+          message << what << " must not be negative, got " << value << ".";
+          AssertThrow(false, ExcMessage(message.str()));
+        }
       return value;
     }
 

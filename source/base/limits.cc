@@ -23,12 +23,16 @@ namespace FuzzyContact
              const std::string &what,
              const std::string &why)
     {
-      std::ostringstream message;
-      message << what << " must lie between " << lower << " and " << upper
-              << (why.empty() ? "" : " (" + why + ")") << ", got "
-              << std::setprecision(10) << value << ".";
-      AssertThrow(std::isfinite(value) && value >= lower && value <= upper,
-                  ExcMessage(message.str()));
+      // (The message is formed only when it is needed: a study checks its
+      // values at every evaluation.)
+      if (!(std::isfinite(value) && value >= lower && value <= upper))
+        {
+          std::ostringstream message;
+          message << what << " must lie between " << lower << " and " << upper
+                  << (why.empty() ? "" : " (" + why + ")") << ", got "
+                  << std::setprecision(10) << value << ".";
+          AssertThrow(false, ExcMessage(message.str()));
+        }
       return value;
     }
 

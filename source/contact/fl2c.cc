@@ -322,11 +322,15 @@ namespace FuzzyContact
                                     equilibrium_residual(step, state.p));
                 last_check = it;
               }
-            if (residual <= parameters.tolerance)
+            // With the coarse correction, nodes that joined at the check
+            // (penetrating, however little) are solved for once more: the
+            // correction then makes the answer exact.
+            if (residual <= parameters.tolerance && !(corrected && joined))
               {
                 state.iterations = it;
                 break;
               }
+            joined = false;
             AssertThrow(it < parameters.max_iterations,
                         ExcMessage(failure(residual, force_change)));
             force_change = sweep();
@@ -350,7 +354,10 @@ namespace FuzzyContact
     private:
       // The gaps of the previous step's forces on every row, the scales of
       // the regulators and of the residual, and the working set: the nodes
-      // that carry a force or penetrate. O(m) per loaded node, once.
+      // that carry a force, and the most penetrating one (the checks of the
+      // whole interface add the others that penetrate, all at once: on
+      // `overlap` every node penetrates without contact forces, and one
+      // closes). O(m) per loaded node, once.
       void
       start()
       {
@@ -368,6 +375,7 @@ namespace FuzzyContact
         // The gap scale: the largest free penetration, or the largest free
         // gap if nothing penetrates without contact forces.
         double g_scale = 0, gap = 0;
+        int    deepest = -1;
         for (unsigned int k = 0; k < n; ++k)
           {
             const double g = step.g_free[normal_row(k)];
@@ -375,9 +383,15 @@ namespace FuzzyContact
             gap            = std::max(gap, std::abs(g));
             if (g < 0)
               free_force = std::max(free_force, -c_n(k) * g);
-            if (state.p[normal_row(k)] != 0 || state.g[normal_row(k)] < 0)
+            if (state.p[normal_row(k)] != 0 || state.p[tangential_row(k)] != 0)
               join(k);
+            else if (state.g[normal_row(k)] < 0 &&
+                     (deepest < 0 ||
+                      state.g[normal_row(k)] < state.g[normal_row(deepest)]))
+              deepest = k;
           }
+        if (deepest >= 0)
+          join(deepest);
         // Without free gaps, from the gaps of the previous forces.
         if (gap == 0)
           for (const unsigned int k : working)
@@ -477,12 +491,16 @@ namespace FuzzyContact
             add_column(j, state.p[j], true);
         prune();
         double worst = 0;
+        joined       = false;
         for (unsigned int k = 0; k < n; ++k)
           {
             const double r = node_residual(k);
             worst          = std::max(worst, r);
-            if (r > 0)
-              join(k);
+            if (r > 0 && !in_working[k])
+              {
+                join(k);
+                joined = true;
+              }
           }
         return worst == 0 ? 0. : worst / scale();
       }
@@ -650,6 +668,8 @@ namespace FuzzyContact
       Regulators                                regulators;
       ContactState                              state;
       double                                    free_force = 0;
+      // Whether the last check of the interface added nodes.
+      bool joined = false;
       // The exact solver of the coarse correction: from the regulators'
       // statuses, a few iterations (a poor start may cycle into Murty's
       // one-node-per-iteration rule); else from its own frictionless start.
