@@ -289,13 +289,17 @@ namespace FuzzyContact
       }
     const ReanalysisSettings &rs = settings.reanalysis;
     m.reanalysis = std::make_unique<ParameterIndependentReanalysis>();
+    // Lee's derivatives by deflated CG use the factorisation of the
+    // stiffness that the modes and the static correction were built on.
     m.reanalysis->offline(component,
                           m.modes,
                           names,
                           rs.max_order,
                           rs.truncation_tolerance,
                           rs.cluster_gap,
-                          timer);
+                          timer,
+                          rs.derivative_solver,
+                          bodies.stiffness_factorisation(c));
     {
       auto scope = timer_section(timer, "reanalysis order selection");
       std::vector<std::vector<double>> corners;
