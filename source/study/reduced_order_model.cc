@@ -620,10 +620,21 @@ namespace FuzzyContact
             for (const SceneQuantity &q : m.quantities)
               out << " " << q.name;
             if (m.hptp)
-              out << ": parameter-independent HPTP, order "
-                  << m.reanalysis->order() << " ("
-                  << m.reanalysis->basis_size(m.reanalysis->order())
-                  << " basis vectors)";
+              {
+                const auto &cost = m.reanalysis->derivative_cost();
+                out << ": parameter-independent HPTP, order "
+                    << m.reanalysis->order() << " ("
+                    << m.reanalysis->basis_size(m.reanalysis->order())
+                    << " basis vectors; Lee's derivatives: ";
+                if (cost.method == DerivativeSolver::deflated_cg)
+                  out << cost.systems << " systems by deflated CG, "
+                      << cost.cg_iterations << " steps";
+                if (cost.factorisations > 0)
+                  out << (cost.method == DerivativeSolver::deflated_cg ? ", "
+                                                                       : "")
+                      << cost.factorisations << " bordered matrices factorised";
+                out << ")";
+              }
             else
               out << ": exact scaling of the stiffness"
                   << (m.n_modes > 0 ? " (modes unchanged)" : "");
