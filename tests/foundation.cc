@@ -807,6 +807,80 @@ TEST(SparseCholesky, TrailingBlockIsTheInverseRestrictedToTheLastDofs)
   EXPECT_LT(v.linfty_norm(), 1e-8 * u.linfty_norm());
 }
 
+// A body refactorised at new zone moduli keeps its pattern: the second
+// factorisation copies the symbolic analysis of the first (counted) and must
+// give the same bits as a factorisation analysed afresh; a pattern with
+// other DoFs ordered last gets an analysis of its own (its trailing DoFs are
+// those). The multi-column solve agrees with single solves to round-off.
+TEST(SparseCholesky, SharesTheAnalysisOfOnePatternAndSolvesManyColumns)
+{
+  const Scene scene = three_zone_scene("left");
+  Component   component(scene.components[0], scene.plane_model, 1);
+  std::vector<dealii::types::global_dof_index> last, other;
+  for (const auto dof : component.vertex_dofs(dealii::Point<2>(0.1, 0.008)))
+    last.push_back(dof);
+  for (const auto dof : component.vertex_dofs(dealii::Point<2>(0.2, 0.008)))
+    other.push_back(dof);
+  const std::vector<double> moduli  = component.zone_moduli();
+  std::vector<double>       changed = moduli;
+  changed[1] *= 1.3;
+  changed[2] *= 0.7;
+  const std::vector<double> densities = component.zone_densities();
+
+  const unsigned long shared = SparseCholesky::n_shared_analyses();
+  SparseCholesky      nominal, again, fresh, elsewhere;
+  nominal.factorize(component.stiffness_matrix(), last, "beam");
+  component.set_zone_materials(changed, densities);
+  const dealii::SparseMatrix<double> &K = component.stiffness_matrix();
+  again.factorize(K, last, "beam");
+  EXPECT_EQ(SparseCholesky::n_shared_analyses(), shared + 1);
+  EXPECT_EQ(again.trailing_dofs(), nominal.trailing_dofs());
+
+  // Two other patterns push the first out of the cache (it keeps two).
+  elsewhere.factorize(K, other, "beam");
+  EXPECT_EQ(SparseCholesky::n_shared_analyses(), shared + 1);
+  std::vector<dealii::types::global_dof_index> trailing =
+    elsewhere.trailing_dofs();
+  std::sort(trailing.begin(), trailing.end());
+  std::sort(other.begin(), other.end());
+  EXPECT_EQ(trailing, other);
+  {
+    SparseCholesky plain;
+    plain.factorize(K, {}, "beam");
+  }
+  fresh.factorize(K, last, "beam");
+  EXPECT_EQ(SparseCholesky::n_shared_analyses(), shared + 1);
+
+  const unsigned int     n = K.m();
+  dealii::Vector<double> f = component.load_vector(), u = f, v = f;
+  again.solve(u);
+  fresh.solve(v);
+  EXPECT_EQ(u, v); // the same analysis, the same numeric factorisation
+  EXPECT_EQ(again.trailing_inverse(), fresh.trailing_inverse());
+  SparseDirectSolver lu;
+  lu.factorize(K);
+  dealii::Vector<double> w = f;
+  lu.solve(w);
+  w -= u;
+  EXPECT_LT(w.linfty_norm(), 1e-8 * u.linfty_norm());
+
+  // Three columns at once.
+  std::vector<double> columns(3 * n);
+  for (unsigned int j = 0; j < 3; ++j)
+    for (unsigned int i = 0; i < n; ++i)
+      columns[j * n + i] = std::sin(0.3 * (j + 1) * i);
+  std::vector<double> single = columns;
+  again.solve(columns.data(), 3);
+  for (unsigned int j = 0; j < 3; ++j)
+    {
+      dealii::Vector<double> x(single.begin() + j * n,
+                               single.begin() + (j + 1) * n);
+      again.solve(x);
+      for (unsigned int i = 0; i < n; ++i)
+        EXPECT_NEAR(columns[j * n + i], x[i], 1e-13 * x.linfty_norm());
+    }
+}
+
 TEST(SparseCholesky, RefusesAnUnsupportedBodyNamingIt)
 {
   const Scene     scene = three_zone_scene("");

@@ -4,7 +4,10 @@
 #include <deal.II/lac/lapack_templates.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <list>
+#include <mutex>
 #include <suitesparse/cholmod.h>
 
 namespace FuzzyContact
@@ -91,7 +94,59 @@ namespace FuzzyContact
         matrix.x      = values.data();
       }
     };
+
+    // The symbolic analyses (CAMD ordering and supernodal structure) of the
+    // last patterns factorised, each with the pattern of the lower triangle
+    // and the DoFs ordered last that it was made for: a matrix of the same
+    // pattern and the same DoFs last gets the same analysis (CAMD and
+    // CHOLMOD's analysis are deterministic), so it is copied, not redone.
+    // A component refactorised at new zone moduli (the exact solves of a
+    // zone study) pays the numeric factorisation only.
+    struct SymbolicAnalysis
+    {
+      std::vector<Index>        column_starts;
+      std::vector<unsigned int> rows;
+      std::vector<Index>        last; // member[] of the DoFs ordered last
+      double                    lnz      = 0;
+      cholmod_factor           *symbolic = nullptr;
+      cholmod_common            common;
+
+      SymbolicAnalysis()
+      {
+        cholmod_l_start(&common);
+        common.print = 0;
+      }
+      ~SymbolicAnalysis()
+      {
+        cholmod_l_free_factor(&symbolic, &common);
+        cholmod_l_finish(&common);
+      }
+
+      bool
+      matches(const LowerTriangle      &lower,
+              const std::vector<Index> &member) const
+      {
+        return column_starts == lower.column_starts && last == member &&
+               std::equal(rows.begin(),
+                          rows.end(),
+                          lower.rows.begin(),
+                          lower.rows.end());
+      }
+    };
+
+    // At most two (two bodies refactorised in turn), most recent first.
+    constexpr unsigned int                       max_analyses = 2;
+    std::mutex                                   analyses_mutex;
+    std::list<std::shared_ptr<SymbolicAnalysis>> analyses;
+    std::atomic<unsigned long>                   n_shared{0};
   } // namespace
+
+
+  unsigned long
+  SparseCholesky::n_shared_analyses()
+  {
+    return n_shared;
+  }
 
 
   void
@@ -120,33 +175,67 @@ namespace FuzzyContact
         member[dof] = 1;
       }
     const Index m = std::count(member.begin(), member.end(), 1);
-    AssertThrow(cholmod_l_camd(&lower.matrix,
-                               nullptr,
-                               0,
-                               member.data(),
-                               permutation.data(),
-                               &common) == 1,
-                ExcMessage(what +
-                           " could not be ordered: CHOLMOD's CAMD failed "
-                           "with status " +
-                           std::to_string(common.status) + "."));
-    common.nmethods           = 1;
-    common.method[0].ordering = CHOLMOD_GIVEN;
-    common.postorder          = 0;
-    common.supernodal         = CHOLMOD_SUPERNODAL;
-    data->factor              = cholmod_l_analyze_p(&lower.matrix,
-                                       permutation.data(),
-                                       nullptr,
-                                       0,
-                                       &common);
-    AssertThrow(data->factor != nullptr,
-                ExcMessage(what +
-                           " could not be analysed: CHOLMOD failed with "
-                           "status " +
-                           std::to_string(common.status) +
-                           (common.status == CHOLMOD_OUT_OF_MEMORY
-                              ? " (out of memory)."
-                              : ".")));
+    {
+      std::lock_guard<std::mutex> lock(analyses_mutex);
+      for (auto it = analyses.begin(); it != analyses.end(); ++it)
+        if ((*it)->matches(lower, member))
+          {
+            data->factor = cholmod_l_copy_factor((*it)->symbolic, &common);
+            AssertThrow(data->factor != nullptr,
+                        ExcMessage(what +
+                                   " could not be analysed: "
+                                   "CHOLMOD failed with status " +
+                                   std::to_string(common.status) + "."));
+            common.lnz = (*it)->lnz;
+            analyses.splice(analyses.begin(), analyses, it);
+            ++n_shared;
+            break;
+          }
+    }
+    if (data->factor == nullptr)
+      {
+        AssertThrow(cholmod_l_camd(&lower.matrix,
+                                   nullptr,
+                                   0,
+                                   member.data(),
+                                   permutation.data(),
+                                   &common) == 1,
+                    ExcMessage(what +
+                               " could not be ordered: CHOLMOD's CAMD failed "
+                               "with status " +
+                               std::to_string(common.status) + "."));
+        common.nmethods           = 1;
+        common.method[0].ordering = CHOLMOD_GIVEN;
+        common.postorder          = 0;
+        common.supernodal         = CHOLMOD_SUPERNODAL;
+        data->factor              = cholmod_l_analyze_p(&lower.matrix,
+                                           permutation.data(),
+                                           nullptr,
+                                           0,
+                                           &common);
+        AssertThrow(data->factor != nullptr,
+                    ExcMessage(what +
+                               " could not be analysed: CHOLMOD failed with "
+                               "status " +
+                               std::to_string(common.status) +
+                               (common.status == CHOLMOD_OUT_OF_MEMORY
+                                  ? " (out of memory)."
+                                  : ".")));
+        auto analysis           = std::make_shared<SymbolicAnalysis>();
+        analysis->column_starts = lower.column_starts;
+        analysis->rows.assign(lower.rows.begin(), lower.rows.end());
+        analysis->last = member;
+        analysis->lnz  = common.lnz;
+        analysis->symbolic =
+          cholmod_l_copy_factor(data->factor, &analysis->common);
+        if (analysis->symbolic != nullptr)
+          {
+            std::lock_guard<std::mutex> lock(analyses_mutex);
+            analyses.push_front(std::move(analysis));
+            if (analyses.size() > max_analyses)
+              analyses.pop_back();
+          }
+      }
     cholmod_l_factorize(&lower.matrix, data->factor, &common);
     const Index *perm = static_cast<const Index *>(data->factor->Perm);
     if (common.status == CHOLMOD_NOT_POSDEF)
@@ -214,6 +303,38 @@ namespace FuzzyContact
                            std::to_string(data->common.status) + "."));
     const double *x = static_cast<const double *>(data->x->x);
     std::copy(x, x + b.size(), b.begin());
+  }
+
+
+  void
+  SparseCholesky::solve(double *columns, const unsigned int n_columns) const
+  {
+    Assert(data->factor != nullptr, ExcMessage("factorize() first."));
+    if (n_columns == 0)
+      return;
+    const std::size_t n   = this->n();
+    cholmod_dense     rhs = cholmod_dense();
+    rhs.nrow              = n;
+    rhs.ncol              = n_columns;
+    rhs.nzmax             = n * n_columns;
+    rhs.d                 = n;
+    rhs.x                 = columns;
+    rhs.xtype             = CHOLMOD_REAL;
+    rhs.dtype             = CHOLMOD_DOUBLE;
+    const int ok          = cholmod_l_solve2(CHOLMOD_A,
+                                    data->factor,
+                                    &rhs,
+                                    nullptr,
+                                    &data->x,
+                                    nullptr,
+                                    &data->y,
+                                    &data->e,
+                                    &data->common);
+    AssertThrow(ok == 1,
+                ExcMessage("CHOLMOD's solve failed with status " +
+                           std::to_string(data->common.status) + "."));
+    const double *x = static_cast<const double *>(data->x->x);
+    std::copy(x, x + n * n_columns, columns);
   }
 
 

@@ -41,21 +41,27 @@ namespace FuzzyContact
   } // namespace
 
 
-  FirstOrderTaylor::FirstOrderTaylor(const ParameterModel &model,
-                                     const ModalBasis     &nominal,
-                                     const double          cluster_gap)
+  FirstOrderTaylor::FirstOrderTaylor(const ParameterModel  &model,
+                                     const ModalBasis      &nominal,
+                                     const double           cluster_gap,
+                                     const DerivativeSolver method)
       : model(model)
       , nominal(nominal)
   {
     const unsigned int n_p = model.n_parameters();
     std::shared_ptr<const SparseDirectSolver::Analysis> analysis;
+    std::shared_ptr<const DeflatedBorderedSolver>       deflated;
+    if (method == DerivativeSolver::deflated_cg)
+      deflated =
+        std::make_shared<DeflatedBorderedSolver>(model, nominal, nullptr);
     for (const auto &modes : reanalysis_clusters(nominal, cluster_gap))
       {
         const EigenDerivatives derivatives(model,
                                            nominal,
                                            modes,
                                            cluster_gap,
-                                           analysis);
+                                           analysis,
+                                           deflated);
         analysis = derivatives.analysis();
         Cluster c;
         c.modes = modes;

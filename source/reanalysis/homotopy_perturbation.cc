@@ -8,18 +8,24 @@ namespace FuzzyContact
   HomotopyPerturbation::HomotopyPerturbation(const ParameterModel &model,
                                              const ModalBasis     &nominal,
                                              const double truncation_tolerance,
-                                             const double cluster_gap)
+                                             const double cluster_gap,
+                                             const DerivativeSolver method)
       : model(model)
       , nominal(nominal)
       , truncation_tolerance(truncation_tolerance)
   {
+    std::shared_ptr<const DeflatedBorderedSolver> deflated;
+    if (method == DerivativeSolver::deflated_cg)
+      deflated =
+        std::make_shared<DeflatedBorderedSolver>(model, nominal, nullptr);
     for (const auto &modes : reanalysis_clusters(nominal, cluster_gap))
       clusters.push_back(std::make_unique<EigenDerivatives>(
         model,
         nominal,
         modes,
         cluster_gap,
-        clusters.empty() ? nullptr : clusters.back()->analysis()));
+        clusters.empty() ? nullptr : clusters.back()->analysis(),
+        deflated));
   }
 
 
@@ -43,9 +49,15 @@ namespace FuzzyContact
   {
     AssertThrow(order >= 1, ExcMessage("HPTP: order must be >= 1."));
     AssertDimension(t.size(), model.n_parameters());
-    std::vector<EigenTaylorCoefficients> terms;
+    std::vector<const EigenDerivatives *> all;
     for (const auto &cluster : clusters)
-      terms.push_back(cluster->taylor_coefficients({t}, order, false));
+      all.push_back(cluster.get());
+    const std::vector<EigenTaylorCoefficients> terms =
+      EigenDerivatives::taylor_coefficients(all,
+                                            {t},
+                                            order,
+                                            std::vector<bool>(all.size(),
+                                                              false));
 
     SparseMatrix<double> K, M;
     model.matrices(t, K, M);

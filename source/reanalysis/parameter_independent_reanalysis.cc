@@ -22,13 +22,15 @@ namespace FuzzyContact
 
   void
   ParameterIndependentReanalysis::offline(
-    const Component                &component,
-    const ModalBasis               &nominal,
-    const std::vector<std::string> &parameter_names,
-    const unsigned int              order,
-    const double                    truncation_tolerance,
-    const double                    cluster_gap,
-    TimerOutput                    *timer)
+    const Component                      &component,
+    const ModalBasis                     &nominal,
+    const std::vector<std::string>       &parameter_names,
+    const unsigned int                    order,
+    const double                          truncation_tolerance,
+    const double                          cluster_gap,
+    TimerOutput                          *timer,
+    const DerivativeSolver                method,
+    std::shared_ptr<const SparseCholesky> stiffness_factorisation)
   {
     AssertThrow(order >= 1 && order <= 3,
                 ExcMessage("modal reanalysis: order must be 1, 2 or 3, got " +
@@ -62,23 +64,45 @@ namespace FuzzyContact
       identity[k][k] = 1;
     std::vector<EigenTaylorCoefficients> terms;
     {
-      const auto s = scope("reanalysis offline: Lee's derivatives");
-      // The clusters' bordered matrices share one symbolic analysis.
-      std::shared_ptr<const SparseDirectSolver::Analysis> analysis;
+      const auto s            = scope("reanalysis offline: Lee's derivatives");
+      derivative_cost_        = DerivativeCost();
+      derivative_cost_.method = method;
+      std::shared_ptr<const DeflatedBorderedSolver> deflated;
+      if (method == DerivativeSolver::deflated_cg)
+        deflated =
+          std::make_shared<DeflatedBorderedSolver>(*model_,
+                                                   nominal_,
+                                                   stiffness_factorisation);
+      // The clusters' bordered matrices share one symbolic analysis (when
+      // they are factorised), their systems one deflated solver.
+      std::vector<std::unique_ptr<EigenDerivatives>> derivatives;
+      std::vector<const EigenDerivatives *>          clusters;
+      std::vector<bool>                              mass_normalise;
       for (const auto &cluster : clusters_)
         {
-          const EigenDerivatives derivatives(*model_,
-                                             nominal_,
-                                             cluster,
-                                             cluster_gap,
-                                             analysis);
-          analysis = derivatives.analysis();
-          terms.push_back(
-            derivatives.taylor_coefficients(identity,
-                                            order,
-                                            /*mass_normalise=*/cluster.size() ==
-                                              1));
+          derivatives.push_back(std::make_unique<EigenDerivatives>(
+            *model_,
+            nominal_,
+            cluster,
+            cluster_gap,
+            derivatives.empty() ? nullptr : derivatives.back()->analysis(),
+            deflated));
+          clusters.push_back(derivatives.back().get());
+          mass_normalise.push_back(cluster.size() == 1);
         }
+      terms = EigenDerivatives::taylor_coefficients(clusters,
+                                                    identity,
+                                                    order,
+                                                    mass_normalise);
+      if (deflated)
+        {
+          const auto st                     = deflated->statistics();
+          derivative_cost_.systems          = st.systems;
+          derivative_cost_.cg_iterations    = st.iterations;
+          derivative_cost_.not_solved_by_cg = st.not_solved;
+        }
+      for (const auto &d : derivatives)
+        derivative_cost_.factorisations += d->n_factorisations();
     }
 
     {
@@ -228,6 +252,13 @@ namespace FuzzyContact
                  online_to_tolerance(t, tolerance, check_residuals).order);
     order_ = chosen;
     return chosen;
+  }
+
+
+  const ParameterIndependentReanalysis::DerivativeCost &
+  ParameterIndependentReanalysis::derivative_cost() const
+  {
+    return derivative_cost_;
   }
 
 

@@ -30,7 +30,8 @@ namespace FuzzyContact
     if (name == "taylor")
       return std::make_unique<FirstOrderTaylor>(model,
                                                 nominal,
-                                                settings.cluster_gap);
+                                                settings.cluster_gap,
+                                                settings.derivative_solver);
     if (name == "ca")
       return std::make_unique<CombinedApproximations>(
         model,
@@ -41,7 +42,8 @@ namespace FuzzyContact
         model,
         nominal,
         settings.truncation_tolerance,
-        settings.cluster_gap);
+        settings.cluster_gap,
+        settings.derivative_solver);
     if (name == "hptp-pi")
       {
         std::vector<std::string> parameter_names;
@@ -53,7 +55,9 @@ namespace FuzzyContact
                         parameter_names,
                         settings.max_order,
                         settings.truncation_tolerance,
-                        settings.cluster_gap);
+                        settings.cluster_gap,
+                        nullptr,
+                        settings.derivative_solver);
         return method;
       }
     std::string known;

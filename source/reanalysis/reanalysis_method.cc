@@ -41,6 +41,15 @@ namespace FuzzyContact
                       "Compute the relative residuals ||K phi - lambda M "
                       "phi|| / ||K phi|| of the reanalysed pairs on the "
                       "full matrices.");
+    prm.declare_entry("derivative solver",
+                      "deflated cg",
+                      Patterns::Selection("deflated cg|direct"),
+                      "How Lee's bordered systems are solved: 'deflated cg' "
+                      "(conjugate gradients on the complement of the "
+                      "nominal modes, preconditioned by the stiffness's "
+                      "Cholesky factorisation; a system it does not solve "
+                      "is factorised) or 'direct' (one LU factorisation of "
+                      "the bordered matrix per mode).");
     prm.leave_subsection();
   }
 
@@ -64,7 +73,10 @@ namespace FuzzyContact
     AssertThrow(cluster_gap < 1,
                 ExcMessage("Reanalysis: cluster gap must be below 1, got " +
                            std::to_string(cluster_gap) + "."));
-    residual_check = prm.get_bool("residual check");
+    residual_check    = prm.get_bool("residual check");
+    derivative_solver = prm.get("derivative solver") == "direct"
+                          ? DerivativeSolver::direct
+                          : DerivativeSolver::deflated_cg;
     prm.leave_subsection();
   }
 

@@ -25,7 +25,7 @@ namespace FuzzyContact
         const std::string what      = "Component " + component.name();
         if (!owned.empty() && !owned[c])
           {
-            modes.emplace_back(); // built on another rank
+            modes.emplace_back(); // not needed, or built on another rank
             continue;
           }
         if (parameters.shift == 0)

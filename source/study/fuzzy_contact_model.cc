@@ -3,6 +3,7 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -141,26 +142,42 @@ namespace FuzzyContact
                                const MPI_Comm                      comm)
   {
     // Modes enrich the basis only for what the static correction does not
-    // span exactly: a zone's material (the modes are then re-analysed) or
-    // a study without static correction. A static answer does not depend
-    // on a density; a body's modulus scales its stiffness.
-    bool needed =
+    // span exactly: a zone's material (the modes of that component are then
+    // re-analysed) or a study without static correction. A static answer
+    // does not depend on a density; a body's modulus scales its stiffness,
+    // and a body whose stiffness does not change shape is exact with the
+    // static correction alone.
+    const unsigned int n_c = bodies->n_components();
+    const bool         all =
       !settings.modes_when_needed || !settings.reduced.static_correction;
-    std::string names;
+    std::vector<bool> needed(n_c, all);
+    std::string       names;
     for (const VaryingQuantity &v : varying)
       {
-        needed = needed || v.quantity.zone >= 0;
+        if (v.quantity.zone >= 0)
+          needed[v.quantity.component] = true;
         names += (names.empty() ? "" : ", ") + v.quantity.name;
       }
-    if (needed)
+    if (std::find(needed.begin(), needed.end(), true) != needed.end())
       {
         // Where the components are spread over the ranks, each computes the
         // modes of its own components only.
-        std::vector<bool> owned;
+        std::vector<bool> owned = needed;
         if (ReducedOrderModel::spreads_components(varying, comm))
-          for (unsigned int c = 0; c < bodies->n_components(); ++c)
-            owned.push_back(c % Utilities::MPI::n_mpi_processes(comm) ==
-                            Utilities::MPI::this_mpi_process(comm));
+          for (unsigned int c = 0; c < n_c; ++c)
+            owned[c] = owned[c] && c % Utilities::MPI::n_mpi_processes(comm) ==
+                                     Utilities::MPI::this_mpi_process(comm);
+        std::string without;
+        for (unsigned int c = 0; c < n_c; ++c)
+          if (!needed[c])
+            without +=
+              (without.empty() ? "" : ", ") + bodies->component(c).name();
+        if (!without.empty())
+          skipped_stages =
+            "no modal analysis of " + without +
+            ": no fuzzy parameter changes the shape of its stiffness, so the "
+            "static correction alone makes its reduced contact flexibility "
+            "exact (Reduced models/modes = always computes the modes anyway)";
         return component_modes(*bodies, settings.modal, timer, owned);
       }
     skipped_stages =
@@ -169,7 +186,7 @@ namespace FuzzyContact
       "does not depend on it), a friction coefficient or a gap, so the "
       "static correction alone makes the reduced contact flexibility exact "
       "(Reduced models/modes = always computes the modes anyway)";
-    return std::vector<ModalBasis>(bodies->n_components());
+    return std::vector<ModalBasis>(n_c);
   }
 
 

@@ -5,6 +5,7 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -293,15 +294,25 @@ namespace FuzzyContact
             ranges.push_back(v.range);
       }
     const ReanalysisSettings &rs = settings.reanalysis;
-    m.reanalysis = std::make_unique<ParameterIndependentReanalysis>();
-    m.reanalysis->offline(component,
-                          m.modes,
-                          names,
-                          rs.max_order,
-                          rs.truncation_tolerance,
-                          rs.cluster_gap,
-                          timer);
-    {
+    // The order is the lowest whose change to the next order meets the
+    // tolerance at the corners of the box, so the basis is first built up
+    // to order 2 only: when order 1 is chosen, order 3's systems are never
+    // solved. Otherwise it is built again up to the maximum order and the
+    // choice made on it: the same order and the same leading columns of the
+    // basis as building every order at once.
+    const auto build = [&](const unsigned int order) {
+      m.reanalysis = std::make_unique<ParameterIndependentReanalysis>();
+      // Lee's derivatives by deflated CG use the factorisation of the
+      // stiffness that the modes and the static correction were built on.
+      m.reanalysis->offline(component,
+                            m.modes,
+                            names,
+                            order,
+                            rs.truncation_tolerance,
+                            rs.cluster_gap,
+                            timer,
+                            rs.derivative_solver,
+                            bodies.stiffness_factorisation(c));
       auto scope = timer_section(timer, "reanalysis order selection");
       std::vector<std::vector<double>> corners;
       const unsigned int               n = names.size();
@@ -312,10 +323,13 @@ namespace FuzzyContact
             values[k] = (corner >> k) & 1 ? ranges[k].upper : ranges[k].lower;
           corners.push_back(m.reanalysis->model().relative_changes(values));
         }
-      m.reanalysis->select_order(corners,
-                                 rs.order_tolerance,
-                                 rs.residual_check);
-    }
+      return m.reanalysis->select_order(corners,
+                                        rs.order_tolerance,
+                                        rs.residual_check);
+    };
+    const unsigned int first = std::min(rs.max_order, 2u);
+    if (build(first) == first && first < rs.max_order)
+      build(rs.max_order);
 
     auto                scope = timer_section(timer, "reanalysis projections");
     const ReducedBasis &T     = m.reanalysis->basis();
@@ -626,10 +640,21 @@ namespace FuzzyContact
             for (const SceneQuantity &q : m.quantities)
               out << " " << q.name;
             if (m.hptp)
-              out << ": parameter-independent HPTP, order "
-                  << m.reanalysis->order() << " ("
-                  << m.reanalysis->basis_size(m.reanalysis->order())
-                  << " basis vectors)";
+              {
+                const auto &cost = m.reanalysis->derivative_cost();
+                out << ": parameter-independent HPTP, order "
+                    << m.reanalysis->order() << " ("
+                    << m.reanalysis->basis_size(m.reanalysis->order())
+                    << " basis vectors; Lee's derivatives: ";
+                if (cost.method == DerivativeSolver::deflated_cg)
+                  out << cost.systems << " systems by deflated CG, "
+                      << cost.cg_iterations << " steps";
+                if (cost.factorisations > 0)
+                  out << (cost.method == DerivativeSolver::deflated_cg ? ", "
+                                                                       : "")
+                      << cost.factorisations << " bordered matrices factorised";
+                out << ")";
+              }
             else
               out << ": exact scaling of the stiffness"
                   << (m.n_modes > 0 ? " (modes unchanged)" : "");

@@ -66,6 +66,14 @@ namespace FuzzyContact
     /** dst = A^{-1} src (the interface of an inverse operator). */
     void
     vmult(Vector<double> &dst, const Vector<double> &src) const;
+    /**
+     * Overwrites the @p n_columns vectors of length n() stored one after
+     * the other from @p columns by A^{-1} times them, in one call of
+     * CHOLMOD (its supernodal substitutions then work on blocks of
+     * columns: cheaper per column than one solve() each).
+     */
+    void
+    solve(double *columns, const unsigned int n_columns) const;
 
     /**
      * The DoFs given as @p last to factorize(), in the order in which they
@@ -87,6 +95,16 @@ namespace FuzzyContact
      */
     FullMatrix<double>
     trailing_inverse() const;
+
+    /**
+     * How many factorisations so far (in this process) reused the symbolic
+     * analysis of an earlier one: a matrix with the pattern and the DoFs
+     * ordered last of one of the last two factorised gets a copy of its
+     * analysis (the same ordering and structure, hence the same factor
+     * bit for bit) and pays the numeric factorisation only.
+     */
+    static unsigned long
+    n_shared_analyses();
 
     /** Entries of L, and the bytes CHOLMOD holds for the factorisation. */
     double

@@ -25,10 +25,17 @@
 // For alpha = e_k this is Lee's system for the first derivatives, r = -(K_k -
 // l0 M_k) phi0, c = 1/2 phi0^T M_k phi0; second derivatives are
 // d2/dt_k dt_l = (1 + delta_kl) phi_{e_k + e_l}. The bordered matrix is
-// symmetric, indefinite and sparse (one extra dense row and column); it is
-// factorised once per mode by UMFPACK (plain back-substitutions, no
-// iterative refinement: SparseDirectSolver) and reused for every parameter,
-// every order and every direction.
+// symmetric, indefinite and sparse (one extra dense row and column). Two
+// ways of solving it (DerivativeSolver):
+//  - deflated_cg (the default of the programs): conjugate gradients on the
+//    M0-orthogonal complement of the computed nominal modes, preconditioned
+//    by the Cholesky factorisation of K0 that the rest of the model shares,
+//    the modal part in closed form (deflated_bordered_solver.h); a system
+//    that CG does not solve falls back to the direct path;
+//  - direct: the bordered matrix factorised once per mode by UMFPACK
+//    (plain back-substitutions, no iterative refinement:
+//    SparseDirectSolver; the modes' matrices share one symbolic analysis)
+//    and reused for every parameter, every order and every direction.
 //
 // Close or repeated eigenvalues. The bordered matrix is singular when
 // lambda_0 is repeated and ill-conditioned when it is close to another
@@ -65,6 +72,8 @@
 
 #include <fuzzycontact/base/sparse_direct_solver.h>
 #include <fuzzycontact/modal/modal_solver.h>
+#include <fuzzycontact/reanalysis/deflated_bordered_solver.h>
+#include <fuzzycontact/reanalysis/multi_index_set.h>
 #include <fuzzycontact/reanalysis/reanalysis_parameters.h>
 
 #include <deal.II/lac/full_matrix.h>
@@ -80,49 +89,6 @@
 namespace FuzzyContact
 {
   using namespace dealii;
-
-  /**
-   * All multi-indices alpha in N^q with |alpha| <= n, in graded order (all
-   * of order 0, then 1, ...; lexicographic within an order), so that the
-   * indices of order <= p are the first n_up_to_order(p).
-   */
-  class MultiIndexSet
-  {
-  public:
-    MultiIndexSet(const unsigned int n_variables, const unsigned int max_order);
-
-    unsigned int
-    size() const;
-    unsigned int
-    n_variables() const;
-    unsigned int
-    max_order() const;
-    const std::vector<unsigned int> &
-    operator[](const unsigned int i) const;
-    /** |alpha| of the i-th multi-index. */
-    unsigned int
-    order(const unsigned int i) const;
-    /** Position of alpha; throws if alpha is not in the set. */
-    unsigned int
-    index(const std::vector<unsigned int> &alpha) const;
-    /** Number of multi-indices of order <= p. */
-    unsigned int
-    n_up_to_order(const unsigned int p) const;
-    /** alpha! = prod_k alpha_k!. */
-    double
-    factorial(const unsigned int i) const;
-    /** Readable form, e.g. "(1,0,2)". */
-    std::string
-    to_string(const unsigned int i) const;
-
-  private:
-    unsigned int                                      n_variables_;
-    unsigned int                                      max_order_;
-    std::vector<std::vector<unsigned int>>            indices_;
-    std::map<std::vector<unsigned int>, unsigned int> position_;
-    std::vector<unsigned int>                         n_up_to_order_;
-  };
-
 
   /**
    * Taylor coefficients of one cluster of eigenpairs (a single mode is a
@@ -177,9 +143,11 @@ namespace FuzzyContact
 
 
   /**
-   * Lee's bordered systems for one cluster of nominal modes, factorised once
-   * (one UMFPACK factorisation per mode of the cluster) and reused for every
-   * right-hand side.
+   * Lee's bordered systems for one cluster of nominal modes, and the Taylor
+   * coefficients they give. Solved by deflated CG when a
+   * DeflatedBorderedSolver is given, otherwise (and for any system CG does
+   * not solve) by one UMFPACK factorisation per mode of the cluster, made
+   * when first needed and reused for every right-hand side.
    */
   class EigenDerivatives
   {
@@ -195,20 +163,33 @@ namespace FuzzyContact
      * cluster's derivatives, whose bordered matrices have the pattern of
      * this one's if the clusters have one size (it is then shared, which
      * halves the cost of each factorisation; otherwise it is ignored).
+     * @p deflated: the deflated CG solver of @p model and @p nominal
+     * (shared by all the clusters); null: the direct path, every bordered
+     * matrix factorised here.
      */
-    EigenDerivatives(const ParameterModel            &model,
-                     const ModalBasis                &nominal,
-                     const std::vector<unsigned int> &cluster,
-                     const double                     cluster_gap,
-                     const std::shared_ptr<const SparseDirectSolver::Analysis>
-                       &same_pattern = nullptr);
+    EigenDerivatives(
+      const ParameterModel                                      &model,
+      const ModalBasis                                          &nominal,
+      const std::vector<unsigned int>                           &cluster,
+      const double                                               cluster_gap,
+      const std::shared_ptr<const SparseDirectSolver::Analysis> &same_pattern =
+        nullptr,
+      std::shared_ptr<const DeflatedBorderedSolver> deflated = nullptr);
+    ~EigenDerivatives();
 
-    /** The symbolic analysis of the bordered matrices' pattern. */
+    /**
+     * The symbolic analysis of the bordered matrices' pattern, if one was
+     * made (or given); null otherwise.
+     */
     std::shared_ptr<const SparseDirectSolver::Analysis>
     analysis() const;
 
     const std::vector<unsigned int> &
     cluster() const;
+
+    /** Bordered matrices factorised so far (the direct path). */
+    unsigned int
+    n_factorisations() const;
 
     /**
      * Taylor coefficients up to @p order in the given @p directions (each
@@ -219,6 +200,17 @@ namespace FuzzyContact
     taylor_coefficients(const std::vector<std::vector<double>> &directions,
                         const unsigned int                      order,
                         const bool mass_normalise) const;
+
+    /**
+     * The same for several clusters of one nominal basis at once (their
+     * systems of each multi-index solved together: one multi-column
+     * back-substitution per CG step); @p mass_normalise per cluster.
+     */
+    static std::vector<EigenTaylorCoefficients>
+    taylor_coefficients(const std::vector<const EigenDerivatives *> &clusters,
+                        const std::vector<std::vector<double>>      &directions,
+                        const unsigned int                           order,
+                        const std::vector<bool> &mass_normalise);
 
     /**
      * Lee's derivatives of a simple mode up to order 1 or 2 with respect to
@@ -242,12 +234,22 @@ namespace FuzzyContact
           std::vector<double>       &mu) const;
 
   private:
-    const ParameterModel                            &model;
-    const ModalBasis                                &nominal;
-    std::vector<unsigned int>                        cluster_;
-    std::vector<Vector<double>>                      M0_phi;
-    std::vector<double>                              border_scale;
-    std::vector<std::unique_ptr<SparseDirectSolver>> factorisations;
+    /** Solves @p system (a column of this cluster) directly. */
+    void
+    solve_directly(BorderedSystem &system) const;
+    /** The factorisation of column j's bordered matrix, made if needed. */
+    const SparseDirectSolver &
+    factorisation(const unsigned int j) const;
+
+    const ParameterModel                                    &model;
+    const ModalBasis                                        &nominal;
+    std::vector<unsigned int>                                cluster_;
+    std::shared_ptr<const DeflatedBorderedSolver>            deflated;
+    std::vector<Vector<double>>                              M0_phi;
+    std::vector<double>                                      border_scale;
+    std::shared_ptr<const SparseDirectSolver::Analysis>      same_pattern;
+    mutable std::unique_ptr<SparsityPattern>                 bordered_pattern;
+    mutable std::vector<std::unique_ptr<SparseDirectSolver>> factorisations;
   };
 
 

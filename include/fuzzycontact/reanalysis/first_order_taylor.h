@@ -29,9 +29,12 @@ namespace FuzzyContact
   class FirstOrderTaylor : public ReanalysisMethod
   {
   public:
-    FirstOrderTaylor(const ParameterModel &model,
-                     const ModalBasis     &nominal,
-                     const double          cluster_gap);
+    /** Lee's bordered systems are solved by @p method. */
+    FirstOrderTaylor(
+      const ParameterModel  &model,
+      const ModalBasis      &nominal,
+      const double           cluster_gap,
+      const DerivativeSolver method = DerivativeSolver::deflated_cg);
 
     std::string
     name() const override;

@@ -21,16 +21,19 @@ namespace FuzzyContact
 
   /**
    * HPTP with a basis built for each sample: nominal modes and their
-   * homotopy terms along the direction t (Lee's bordered systems, factorised
-   * once per mode in the constructor).
+   * homotopy terms along the direction t (Lee's bordered systems, solved
+   * by @p method: deflated CG on one Cholesky factorisation of K0, or one
+   * LU factorisation per mode, both made in the constructor).
    */
   class HomotopyPerturbation : public ReanalysisMethod
   {
   public:
-    HomotopyPerturbation(const ParameterModel &model,
-                         const ModalBasis     &nominal,
-                         const double          truncation_tolerance,
-                         const double          cluster_gap);
+    HomotopyPerturbation(
+      const ParameterModel  &model,
+      const ModalBasis      &nominal,
+      const double           truncation_tolerance,
+      const double           cluster_gap,
+      const DerivativeSolver method = DerivativeSolver::deflated_cg);
 
     std::string
     name() const override;

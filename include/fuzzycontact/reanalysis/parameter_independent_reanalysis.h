@@ -4,10 +4,11 @@
 //
 // Offline (once per component and parameter set):
 //  1. the nominal modes are grouped into clusters of close eigenvalues;
-//  2. for each cluster, Lee's bordered systems (one UMFPACK factorisation
-//     per mode) give all Taylor coefficients phi_alpha, |alpha| <= n, with
-//     respect to every parameter: the derivatives d^|alpha| phi / dt^alpha
-//     / alpha!, mixed ones included (eigen_derivatives.h);
+//  2. for each cluster, Lee's bordered systems give all Taylor
+//     coefficients phi_alpha, |alpha| <= n, with respect to every
+//     parameter: the derivatives d^|alpha| phi / dt^alpha / alpha!, mixed
+//     ones included (eigen_derivatives.h), by deflated CG on the Cholesky
+//     factorisation of K0 (or one UMFPACK factorisation per mode);
 //  3. T = [nominal modes | all terms of order 1 | ... | order n] is
 //     M0-orthonormalised with rank truncation (reduced_basis.h), so that the
 //     leading columns of T are the basis of every lower order;
@@ -92,16 +93,34 @@ namespace FuzzyContact
      * the clusters of @p nominal at relative gap @p cluster_gap. The
      * nominal state is the component's current zone materials; @p nominal
      * must be its modes there (copied). @p component must outlive this
-     * object. Stages are timed in @p timer if given.
+     * object. Stages are timed in @p timer if given. Lee's bordered
+     * systems are solved by @p method; deflated CG runs on
+     * @p stiffness_factorisation, a Cholesky factorisation of the
+     * component's stiffness at the nominal state (made here if null).
      */
     void
-    offline(const Component                &component,
-            const ModalBasis               &nominal,
-            const std::vector<std::string> &parameter_names,
-            const unsigned int              order,
-            const double                    truncation_tolerance,
-            const double                    cluster_gap = 1e-2,
-            TimerOutput                    *timer       = nullptr);
+    offline(
+      const Component                &component,
+      const ModalBasis               &nominal,
+      const std::vector<std::string> &parameter_names,
+      const unsigned int              order,
+      const double                    truncation_tolerance,
+      const double                    cluster_gap = 1e-2,
+      TimerOutput                    *timer       = nullptr,
+      const DerivativeSolver          method = DerivativeSolver::deflated_cg,
+      std::shared_ptr<const SparseCholesky> stiffness_factorisation = nullptr);
+
+    /** What Lee's bordered systems cost in the last offline(). */
+    struct DerivativeCost
+    {
+      DerivativeSolver method = DerivativeSolver::deflated_cg;
+      /** Systems given to deflated CG, its steps, those it left. */
+      unsigned int systems = 0, cg_iterations = 0, not_solved_by_cg = 0;
+      /** Bordered matrices factorised (UMFPACK). */
+      unsigned int factorisations = 0;
+    };
+    const DerivativeCost &
+    derivative_cost() const;
 
     /** The reanalysed eigenpairs at relative changes @p t, at order(). */
     ReanalysedModes
@@ -197,6 +216,7 @@ namespace FuzzyContact
     std::vector<unsigned int>              basis_sizes_;
     std::vector<FullMatrix<double>>        zone_K_, zone_M_;
     unsigned int                           max_order_ = 0;
+    DerivativeCost                         derivative_cost_;
     // Built on the first call of residuals() (not needed online).
     mutable std::unique_ptr<ResidualCheck> residual_check_;
     unsigned int                           order_ = 0;

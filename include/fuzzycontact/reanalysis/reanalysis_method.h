@@ -33,6 +33,7 @@
 #define fuzzycontact_reanalysis_reanalysis_method_h
 
 #include <fuzzycontact/modal/modal_solver.h>
+#include <fuzzycontact/reanalysis/deflated_bordered_solver.h>
 #include <fuzzycontact/reanalysis/reduced_basis.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -72,6 +73,12 @@ namespace FuzzyContact
     double cluster_gap = 1e-2;
     /** Compute the residuals of the reanalysed pairs on the full matrices. */
     bool residual_check = true;
+    /**
+     * How Lee's bordered systems are solved: deflated CG on the Cholesky
+     * factorisation of K0 (falling back to the direct path for a system it
+     * does not solve), or one LU factorisation per mode.
+     */
+    DerivativeSolver derivative_solver = DerivativeSolver::deflated_cg;
 
     static void
     declare_parameters(ParameterHandler &prm);

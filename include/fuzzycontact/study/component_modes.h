@@ -20,8 +20,8 @@ namespace FuzzyContact
    * The lowest modes of every component of @p bodies at their current
    * materials ("modes (ARPACK)" in @p timer), on the bodies' shared
    * stiffness factorisation at shift 0. If @p owned is not empty, only the
-   * components it marks (the others are built on other MPI ranks: their
-   * bases are left empty).
+   * components it marks (the others need no modes, or are built on other
+   * MPI ranks: their bases are left empty).
    */
   std::vector<ModalBasis>
   component_modes(const ContactScene      &bodies,
