@@ -149,7 +149,8 @@ namespace FuzzyContact
   Component::Component(const ComponentDescription &description,
                        const PlaneModel            plane_model,
                        const unsigned int          n_refinements,
-                       TimerOutput                *timer)
+                       TimerOutput                *timer,
+                       const bool                  assemble)
       : description_(description)
       , plane_model_(plane_model)
       , fe_(FE_Q<2>(description.fe_degree), 2)
@@ -177,14 +178,51 @@ namespace FuzzyContact
       make_mesh(n_refinements);
       setup_dofs();
     }
-    {
-      std::unique_ptr<TimerOutput::Scope> scope;
-      if (timer != nullptr)
-        scope = std::make_unique<TimerOutput::Scope>(*timer, "assembly");
-      assemble_zone_matrices();
-      assemble_loads();
-      form_global_matrices();
-    }
+    if (assemble)
+      {
+        std::unique_ptr<TimerOutput::Scope> scope;
+        if (timer != nullptr)
+          scope = std::make_unique<TimerOutput::Scope>(*timer, "assembly");
+        ensure_matrices();
+        ensure_loads();
+        form_global_matrices();
+      }
+  }
+
+
+  bool
+  Component::is_assembled() const
+  {
+    return assembled_;
+  }
+
+
+  void
+  Component::ensure_matrices() const
+  {
+    if (assembled_)
+      return;
+    DynamicSparsityPattern dsp(dof_handler_.n_dofs());
+    DoFTools::make_sparsity_pattern(dof_handler_,
+                                    dsp,
+                                    constraints_,
+                                    /*keep_constrained_dofs=*/false);
+    sparsity_pattern_.copy_from(dsp);
+    assemble_zone_matrices();
+    assembled_ = true;
+  }
+
+
+  void
+  Component::ensure_loads() const
+  {
+    if (loads_assembled_)
+      return;
+    // The loads of prescribed displacements come from the cell matrices.
+    if (!displacement_fields_.empty())
+      ensure_matrices();
+    assemble_loads();
+    loads_assembled_ = true;
   }
 
 
@@ -368,13 +406,6 @@ namespace FuzzyContact
       }
     constraints_.close();
 
-    DynamicSparsityPattern dsp(dof_handler_.n_dofs());
-    DoFTools::make_sparsity_pattern(dof_handler_,
-                                    dsp,
-                                    constraints_,
-                                    /*keep_constrained_dofs=*/false);
-    sparsity_pattern_.copy_from(dsp);
-
     support_points_.resize(dof_handler_.n_dofs());
     DoFTools::map_dofs_to_support_points(*mapping_,
                                          dof_handler_,
@@ -383,7 +414,7 @@ namespace FuzzyContact
 
 
   void
-  Component::assemble_zone_matrices()
+  Component::assemble_zone_matrices() const
   {
     const unsigned int n_zones = description_.zones.size();
     zone_stiffness_.resize(n_zones);
@@ -424,6 +455,7 @@ namespace FuzzyContact
   Component::assemble_directly(SparseMatrix<double> &K,
                                SparseMatrix<double> &M) const
   {
+    ensure_matrices();
     K.reinit(sparsity_pattern_);
     M.reinit(sparsity_pattern_);
     assemble_elasticity(
@@ -442,6 +474,7 @@ namespace FuzzyContact
   void
   Component::form_global_matrices() const
   {
+    ensure_matrices();
     if (stiffness_.empty())
       {
         stiffness_.reinit(sparsity_pattern_);
@@ -476,7 +509,8 @@ namespace FuzzyContact
     zone_moduli_      = moduli;
     zone_densities_   = densities;
     matrices_current_ = false;
-    if (!displacement_fields_.empty())
+    // (Loads not yet assembled are assembled at these materials.)
+    if (!displacement_fields_.empty() && loads_assembled_)
       update_displacement_loads();
   }
 
@@ -580,13 +614,14 @@ namespace FuzzyContact
   unsigned int
   Component::n_zones() const
   {
-    return zone_stiffness_.size();
+    return description_.zones.size();
   }
 
   const SparseMatrix<double> &
   Component::zone_stiffness_matrix(const unsigned int zone) const
   {
     AssertIndexRange(zone, n_zones());
+    ensure_matrices();
     return zone_stiffness_[zone];
   }
 
@@ -594,6 +629,7 @@ namespace FuzzyContact
   Component::zone_mass_matrix(const unsigned int zone) const
   {
     AssertIndexRange(zone, n_zones());
+    ensure_matrices();
     return zone_mass_[zone];
   }
 
@@ -628,6 +664,7 @@ namespace FuzzyContact
   const SparsityPattern &
   Component::sparsity_pattern() const
   {
+    ensure_matrices();
     return sparsity_pattern_;
   }
 

@@ -20,7 +20,7 @@ namespace FuzzyContact
   Component::add_displacement_loads(
     const unsigned int                          z,
     const FullMatrix<double>                   &cell_k,
-    const std::vector<types::global_dof_index> &dofs)
+    const std::vector<types::global_dof_index> &dofs) const
   {
     if (displacement_fields_.empty())
       return;
@@ -43,7 +43,7 @@ namespace FuzzyContact
 
   // The load of each support displacement at the current zone moduli.
   void
-  Component::update_displacement_loads()
+  Component::update_displacement_loads() const
   {
     unsigned int s = 0;
     load_.reinit(dof_handler_.n_dofs());
@@ -71,7 +71,7 @@ namespace FuzzyContact
   // Each load is a constant traction F d / (face length * t) on its face;
   // the unit vector holds the nodal forces for F = 1 N.
   void
-  Component::assemble_loads()
+  Component::assemble_loads() const
   {
     const QGauss<1>                      face_quadrature(fe_.degree + 1);
     FEFaceValues<2>                      fe_face_values(*mapping_,
@@ -147,12 +147,14 @@ namespace FuzzyContact
   const Vector<double> &
   Component::load_vector() const
   {
+    ensure_loads();
     return load_;
   }
 
   const Vector<double> &
   Component::unit_load_vector(const unsigned int l) const
   {
+    ensure_loads();
     AssertIndexRange(l, unit_loads_.size());
     return unit_loads_[l];
   }
