@@ -1,7 +1,10 @@
 #include <fuzzycontact/reduction/reduced_model.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/lac/lapack_templates.h>
+
+#include <boost/serialization/vector.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -215,6 +218,43 @@ namespace FuzzyContact
   }
 
 
+  ReducedContactModel::ReducedContactModel(
+    std::vector<ReducedComponentMatrices> components,
+    const Vector<double>                 &g_initial,
+    const std::vector<double>            &mu,
+    const std::vector<unsigned int>      &owner,
+    const MPI_Comm                        comm)
+      : variable(components.size())
+      , fixed(components.size())
+      , scales(components.size(), 1.)
+  {
+    AssertThrow(mu.size() * 2 == g_initial.size(),
+                ExcMessage("ReducedContactModel: 2 gap rows per friction "
+                           "coefficient are expected."));
+    AssertDimension(owner.size(), components.size());
+    problem_.g_initial = g_initial;
+    problem_.mu        = mu;
+    // Every rank forms its components' blocks, then they are exchanged.
+    const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+    for (unsigned int c = 0; c < components.size(); ++c)
+      if (rank == owner[c])
+        {
+          variable[c].matrices = std::move(components[c]);
+          compute_blocks(variable[c]);
+        }
+    for (unsigned int c = 0; c < components.size(); ++c)
+      {
+        Part received = Utilities::MPI::broadcast(comm, variable[c], owner[c]);
+        if (rank != owner[c])
+          variable[c] = std::move(received);
+        load_forces.push_back(variable[c].matrices.reference_forces);
+      }
+    flexibility_         = std::make_shared<Flexibility>(*this);
+    problem_.flexibility = flexibility_;
+    flexibility_changed();
+  }
+
+
   ReducedContactModel::~ReducedContactModel() = default;
 
 
@@ -319,7 +359,8 @@ namespace FuzzyContact
         part.load_gaps.push_back(std::move(g));
         part.observation_loads.push_back(std::move(u));
       }
-    part.present = true;
+    part.present      = true;
+    part.has_matrices = true;
   }
 
 
@@ -474,6 +515,11 @@ namespace FuzzyContact
     std::vector<Vector<double>> q;
     for (unsigned int c = 0; c < variable.size(); ++c)
       {
+        if (!variable[c].has_matrices)
+          {
+            q.emplace_back(); // formed on another rank
+            continue;
+          }
         std::vector<Vector<double>> parts;
         for (const Part *part : {&variable[c], &fixed[c]})
           if (part->present)

@@ -2,6 +2,10 @@
 #include <fuzzycontact/study/fuzzy_contact_model.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
+
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/vector.hpp>
 
 #include <cmath>
 #include <sstream>
@@ -89,16 +93,12 @@ namespace FuzzyContact
     const MPI_Comm                   comm)
       : scene(scene_)
       , fuzzy(fuzzy)
+      , comm(comm)
   {
     AssertThrow(!scene.contact_pairs.empty(),
                 ExcMessage("The fuzzy contact study needs a scene with a "
                            "contact pair."));
     Observations::check(output_names, scene);
-    bodies  = std::make_unique<ContactScene>(scene,
-                                            settings.mesh_refinements,
-                                            1e-8,
-                                            timer);
-    outputs = std::make_unique<Observations>(output_names, *bodies);
 
     // A parameter that cannot change the static answer is not varied.
     std::vector<VaryingQuantity> varying;
@@ -112,6 +112,22 @@ namespace FuzzyContact
         if (inert_parameters.back().empty())
           varying.push_back({p.quantity, p.number.alpha_cut(0)});
       }
+
+    // Spread over the ranks, each assembles only the components it builds.
+    std::vector<bool> assemble;
+    if (ReducedOrderModel::spreads_components(varying, comm))
+      {
+        n_ranks_building = Utilities::MPI::n_mpi_processes(comm);
+        for (unsigned int c = 0; c < scene.components.size(); ++c)
+          assemble.push_back(c % n_ranks_building ==
+                             Utilities::MPI::this_mpi_process(comm));
+      }
+    bodies        = std::make_unique<ContactScene>(scene,
+                                            settings.mesh_refinements,
+                                            1e-8,
+                                            timer,
+                                            assemble);
+    outputs       = std::make_unique<Observations>(output_names, *bodies);
     reduced_model = std::make_unique<ReducedOrderModel>(
       *bodies,
       modes_for(varying, settings, timer, comm),
@@ -120,8 +136,6 @@ namespace FuzzyContact
       settings.reduced,
       timer,
       comm);
-    if (ReducedOrderModel::spreads_components(varying, comm))
-      n_ranks_building = Utilities::MPI::n_mpi_processes(comm);
     std::unique_ptr<ContactSolver> solver =
       create_contact_solver(settings.contact_solver,
                             settings.exact,
@@ -305,6 +319,37 @@ namespace FuzzyContact
   FuzzyContactModel::set_reuse_factorisations(const bool reuse)
   {
     full_model->set_reuse_factorisations(reuse);
+  }
+
+
+  double
+  FuzzyContactModel::share_factorisations(TimerOutput *timer)
+  {
+    if (n_ranks_building <= 1)
+      return 0;
+    Timer                     wall;
+    std::vector<unsigned int> owner;
+    for (unsigned int c = 0; c < bodies->n_components(); ++c)
+      owner.push_back(c % n_ranks_building);
+    bodies->share_stiffness_factorisations(owner, comm, timer);
+    return Utilities::MPI::max(wall.wall_time(), comm);
+  }
+
+
+  std::vector<RankWork>
+  FuzzyContactModel::work_per_rank() const
+  {
+    RankWork mine;
+    for (unsigned int c = 0; c < bodies->n_components(); ++c)
+      {
+        if (bodies->component(c).is_assembled())
+          mine.assembled.push_back(bodies->component(c).name());
+        if (bodies->n_factorisations(c) > 0)
+          mine.factorised.push_back(bodies->component(c).name());
+      }
+    if (!Utilities::MPI::job_supports_mpi())
+      return {mine};
+    return Utilities::MPI::all_gather(comm, mine);
   }
 
 

@@ -74,8 +74,9 @@ namespace FuzzyContact
     std::vector<double>        nominal_moduli, nominal_densities;
 
     ModalBasis modes;
-    // The basis (on the rank that built it: every rank unless the
-    // components are spread over the ranks) and its sizes (on every rank).
+    // The basis and its reduced matrices (on the rank that built it: every
+    // rank unless the components are spread over the ranks) and its sizes
+    // (on every rank).
     std::unique_ptr<ReducedComponent> reduced;
     unsigned int                      n_modes = 0, n_corrections = 0;
     ReducedComponentMatrices          nominal_matrices;
@@ -138,21 +139,26 @@ namespace FuzzyContact
         models.push_back(std::move(m));
       }
 
-    // With several ranks, component c is built on rank c mod n and its
-    // reduced blocks are sent to all (unless a component is re-analysed).
+    // With several ranks, component c is built on rank c mod n, and its
+    // blocks of the reduced contact problem are formed there and sent to
+    // all (unless a component is re-analysed).
     const bool         spread = spreads_components(varying, comm);
     const unsigned int n_ranks =
       spread ? Utilities::MPI::n_mpi_processes(comm) : 1;
     const unsigned int rank =
       spread ? Utilities::MPI::this_mpi_process(comm) : 0;
+    std::vector<unsigned int> owner;
     for (unsigned int c = 0; c < n_c; ++c)
-      if (!spread || c % n_ranks == rank)
-        build_component(*models[c], c, observed[c], timer);
+      {
+        owner.push_back(c % n_ranks);
+        if (owner[c] == rank)
+          build_component(*models[c], c, observed[c], timer);
+      }
     if (spread)
       {
         auto scope = timer_section(timer, "reduced blocks exchanged (MPI)");
         for (unsigned int c = 0; c < n_c; ++c)
-          exchange_component(*models[c], c % n_ranks, comm);
+          exchange_component(*models[c], owner[c], comm);
       }
 
     std::vector<ReducedComponentMatrices> nominal;
@@ -176,10 +182,18 @@ namespace FuzzyContact
       }
 
     auto scope = timer_section(timer, "reduced contact flexibility");
-    reduced =
-      std::make_unique<ReducedContactModel>(std::move(nominal),
-                                            interface.initial_gaps(),
-                                            interface.friction_coefficients());
+    if (spread)
+      reduced =
+        std::make_unique<ReducedContactModel>(std::move(nominal),
+                                              interface.initial_gaps(),
+                                              interface.friction_coefficients(),
+                                              owner,
+                                              comm);
+    else
+      reduced = std::make_unique<ReducedContactModel>(
+        std::move(nominal),
+        interface.initial_gaps(),
+        interface.friction_coefficients());
     reduced->set_load_stages(bodies.scene().load_stages);
     for (unsigned int c = 0; c < n_c; ++c)
       if (models[c]->split)
@@ -240,16 +254,15 @@ namespace FuzzyContact
   }
 
 
-  // Sends what the other ranks need of a component built on rank @p owner:
-  // its reduced matrices, the sizes of its basis and its eigenvalues (for
-  // the description).
+  // Sends what the other ranks need of a component built on rank @p owner
+  // besides its blocks of the reduced contact problem (ReducedContactModel
+  // sends those): the sizes of its basis and its eigenvalues (for the
+  // description).
   void
   ReducedOrderModel::exchange_component(ComponentModel    &m,
                                         const unsigned int owner,
                                         const MPI_Comm     comm)
   {
-    m.nominal_matrices =
-      Utilities::MPI::broadcast(comm, m.nominal_matrices, owner);
     const std::vector<unsigned int> sizes =
       Utilities::MPI::broadcast(comm,
                                 std::vector<unsigned int>{m.n_modes,
