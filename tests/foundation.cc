@@ -576,6 +576,30 @@ TEST(Component, AssembledOnFirstUseAsWhenBuilt)
     }
 }
 
+// The forces of a prescribed displacement handed over from a component
+// that assembled them (another MPI rank's) give the loads without any
+// assembly, the same numbers, also after a change of materials.
+TEST(Component, DisplacementLoadsGivenNeedNoAssembly)
+{
+  const Scene patch =
+    Scene::read(std::string(FUZZYCONTACT_SOURCE_DIR) + "/prm/patch-test.prm");
+  const ComponentDescription &d = patch.components[0];
+  Component                   built(d, patch.plane_model, 1);
+  Component lazy(d, patch.plane_model, 1, nullptr, /*assemble=*/false);
+  ASSERT_EQ(built.displacement_zone_loads().size(), 1u);
+  lazy.set_displacement_zone_loads(built.displacement_zone_loads());
+  for (unsigned int l = 0; l < d.loads.size(); ++l)
+    EXPECT_EQ(lazy.unit_load_vector(l), built.unit_load_vector(l));
+  built.set_zone_materials({250e9}, {7000});
+  lazy.set_zone_materials({250e9}, {7000});
+  EXPECT_EQ(lazy.load_vector(), built.load_vector());
+  EXPECT_GT(lazy.load_vector().linfty_norm(), 0.);
+  EXPECT_FALSE(lazy.is_assembled());
+  // Assembled later (an independent analysis), the forces stay the same.
+  lazy.stiffness_matrix();
+  EXPECT_EQ(lazy.displacement_zone_loads(), built.displacement_zone_loads());
+}
+
 TEST(Component, EdgeLoadHasTheDeclaredResultant)
 {
   const Scene     scene = three_zone_scene();

@@ -133,6 +133,31 @@ set_tests_properties(step-4.zones_mpi_np2_same_as_np1 PROPERTIES
   ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1"
   PROCESSORS 2)
 
+# A prescribed displacement (the roller of prm/hertz.prm, curved meshes):
+# its loads come from the stiffness, and the rank that does not build the
+# roller receives them instead of assembling it.
+add_test(NAME step-4.hertz_mpi_np2_same_as_np1
+  COMMAND ${CMAKE_COMMAND}
+    -DPROGRAM=$<TARGET_FILE:step-4>
+    -DPRM=${CMAKE_SOURCE_DIR}/prm/step-4-hertz.prm
+    -DSCENE=${CMAKE_SOURCE_DIR}/prm/hertz.prm
+    -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/work/step-4.hertz_mpi
+    -DOUTPUT=step-4-hertz-output
+    -DEXTRA_FILES=${CMAKE_SOURCE_DIR}/prm/meshes
+    "-DEDIT_FILE=step"
+    "-DEDIT_FROM=set number of alpha levels = 11"
+    "-DEDIT_TO=set number of alpha levels = 2"
+    "-DEDIT2_FILE=step"
+    "-DEDIT2_FROM=set points per dimension = 4"
+    "-DEDIT2_TO=set points per dimension = 3"
+    "-DMPI_LAUNCHER=${DEAL_II_MPIEXEC}|${DEAL_II_MPIEXEC_NUMPROC_FLAG}|2"
+    "-DRANK_ASSEMBLED=Roller|Block"
+    "-DRANK_FACTORISED=Roller|Block"
+    -P ${CMAKE_CURRENT_SOURCE_DIR}/compare_mpi_runs.cmake)
+set_tests_properties(step-4.hertz_mpi_np2_same_as_np1 PROPERTIES
+  ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1"
+  PROCESSORS 2)
+
 # Three components on two ranks (components 0 and 2 on rank 0); its
 # reference is made of independent analyses, for which every rank assembles
 # every component.

@@ -219,7 +219,7 @@ namespace FuzzyContact
     if (loads_assembled_)
       return;
     // The loads of prescribed displacements come from the cell matrices.
-    if (!displacement_fields_.empty())
+    if (!displacement_fields_.empty() && !displacement_loads_formed_)
       ensure_matrices();
     assemble_loads();
     loads_assembled_ = true;
@@ -436,10 +436,14 @@ namespace FuzzyContact
       [this](const unsigned int                          z,
              const FullMatrix<double>                   &cell_k,
              const std::vector<types::global_dof_index> &dofs) {
-        add_displacement_loads(z, cell_k, dofs);
+        if (!displacement_loads_formed_)
+          add_displacement_loads(z, cell_k, dofs);
       });
     for (SparseMatrix<double> &M : zone_mass_)
       remove_constrained_mass(constraints_, M);
+    if (displacement_loads_formed_)
+      return; // given (set_displacement_zone_loads())
+    displacement_loads_formed_ = true;
     // On the held rows, K's diagonal times the displacement: the solution
     // there is the displacement itself.
     for (unsigned int s = 0; s < displacement_fields_.size(); ++s)

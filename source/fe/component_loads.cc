@@ -61,6 +61,35 @@ namespace FuzzyContact
       }
   }
 
+  const std::vector<std::vector<Vector<double>>> &
+  Component::displacement_zone_loads() const
+  {
+    if (!displacement_loads_formed_)
+      ensure_matrices();
+    return displacement_zone_loads_;
+  }
+
+  void
+  Component::set_displacement_zone_loads(
+    const std::vector<std::vector<Vector<double>>> &loads)
+  {
+    bool fits = loads.size() == displacement_fields_.size();
+    for (const auto &support : loads)
+      {
+        fits = fits && support.size() == n_zones();
+        for (const Vector<double> &f : support)
+          fits = fits && f.size() == n_dofs();
+      }
+    AssertThrow(fits,
+                ExcMessage("Component " + name() +
+                           ": the forces of its prescribed displacements "
+                           "given do not fit its supports, zones and DoFs."));
+    displacement_zone_loads_   = loads;
+    displacement_loads_formed_ = true;
+    if (loads_assembled_)
+      update_displacement_loads();
+  }
+
   bool
   Component::is_prescribed(const types::global_dof_index dof) const
   {

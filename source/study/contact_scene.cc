@@ -3,6 +3,9 @@
 #include <fuzzycontact/study/contact_scene.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
+
+#include <boost/serialization/vector.hpp>
 
 #include <algorithm>
 
@@ -192,6 +195,19 @@ namespace FuzzyContact
         mine[c] = stiffness_factorisation(c, timer);
     const auto scope = timer_section(timer, "factorisations shared (MPI)");
     factorisations   = SparseCholesky::broadcast(mine, owner, comm);
+    // The loads of prescribed displacements come from the stiffness too.
+    for (unsigned int c = 0; c < owned.size(); ++c)
+      for (const EdgeLoad &load : owned[c]->description().loads)
+        if (load.is_displacement)
+          {
+            std::vector<std::vector<Vector<double>>> forces;
+            if (rank == owner[c])
+              forces = owned[c]->displacement_zone_loads();
+            forces = Utilities::MPI::broadcast(comm, forces, owner[c]);
+            if (rank != owner[c])
+              owned[c]->set_displacement_zone_loads(forces);
+            break;
+          }
   }
 
 

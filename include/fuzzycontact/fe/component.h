@@ -157,6 +157,24 @@ namespace FuzzyContact
      */
     const Vector<double> &
     load_vector() const;
+    /**
+     * Per support with a prescribed displacement, per zone: the nodal
+     * forces -K_z,fp u_p and K_z,pp u_p at unit modulus along the unit
+     * displacement (see the top of this file), from which the loads of
+     * prescribed displacements are formed. They come from the cell
+     * matrices (assembled for them if not yet).
+     */
+    const std::vector<std::vector<Vector<double>>> &
+    displacement_zone_loads() const;
+    /**
+     * Gives this component the forces of displacement_zone_loads() made
+     * elsewhere (by the MPI rank that assembled the component), so that
+     * its loads need no assembly here.
+     */
+    void
+    set_displacement_zone_loads(
+      const std::vector<std::vector<Vector<double>>> &loads);
+
     /** Nodal forces of load @p l for a total force of 1 N. */
     const Vector<double> &
     unit_load_vector(const unsigned int l) const;
@@ -270,7 +288,9 @@ namespace FuzzyContact
     // forces -K_z,fp u_p (free rows) and K_z,pp u_p (held rows) it needs.
     std::vector<Vector<double>>                      displacement_fields_;
     mutable std::vector<std::vector<Vector<double>>> displacement_zone_loads_;
-    std::vector<bool>                                prescribed_;
+    // Whether they are formed (by the assembly, or given).
+    mutable bool      displacement_loads_formed_ = false;
+    std::vector<bool> prescribed_;
   };
 } // namespace FuzzyContact
 

@@ -109,7 +109,10 @@ namespace FuzzyContact
      * made on rank @p owner[c] of @p comm (and there only, if not made
      * yet), on every rank: the other ranks receive a copy of the factor
      * (SparseCholesky::broadcast()) instead of factorising the stiffness
-     * again. The components are set to the scene's materials first.
+     * again. So are the forces of prescribed displacements
+     * (Component::displacement_zone_loads()), which come from the
+     * stiffness: the other ranks need not assemble the component for its
+     * loads. The components are set to the scene's materials first.
      * Collective.
      */
     void
