@@ -154,13 +154,6 @@ namespace FuzzyContact
         if (owner[c] == rank)
           build_component(*models[c], c, observed[c], timer);
       }
-    if (spread)
-      {
-        auto scope = timer_section(timer, "reduced blocks exchanged (MPI)");
-        for (unsigned int c = 0; c < n_c; ++c)
-          exchange_component(*models[c], owner[c], comm);
-      }
-
     std::vector<ReducedComponentMatrices> nominal;
     for (unsigned int c = 0; c < n_c; ++c)
       {
@@ -181,14 +174,20 @@ namespace FuzzyContact
           build_reanalysis(m, c, varying, timer);
       }
 
+    // (With several ranks, each forms its components' blocks, and then
+    // they are exchanged: this section includes the wait for the others.)
     auto scope = timer_section(timer, "reduced contact flexibility");
     if (spread)
-      reduced =
-        std::make_unique<ReducedContactModel>(std::move(nominal),
-                                              interface.initial_gaps(),
-                                              interface.friction_coefficients(),
-                                              owner,
-                                              comm);
+      {
+        reduced = std::make_unique<ReducedContactModel>(
+          std::move(nominal),
+          interface.initial_gaps(),
+          interface.friction_coefficients(),
+          owner,
+          comm);
+        for (unsigned int c = 0; c < n_c; ++c)
+          exchange_component(*models[c], owner[c], comm);
+      }
     else
       reduced = std::make_unique<ReducedContactModel>(
         std::move(nominal),
