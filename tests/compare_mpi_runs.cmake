@@ -1,8 +1,8 @@
 # Runs a step program once alone and once behind MPI_LAUNCHER (e.g.
 # mpiexec -n 2), through run_program.cmake, and checks that every bound in
 # results.json is the same number in both runs, that every method made as
-# many evaluations in both, and (unless SPREAD is OFF) that the second run
-# spread the components' builds over its ranks; RANK_ASSEMBLED and
+# many evaluations in both, and that the second run spread the components'
+# builds over its ranks; RANK_ASSEMBLED and
 # RANK_FACTORISED (e.g. "P1|P2") name the components each rank must have
 # assembled and factorised, and no others.
 set(base "${WORKDIR}")
@@ -69,10 +69,8 @@ foreach(what assembled factorised)
   message(STATUS "each rank ${what} the components named for it: ${${variable}}")
 endforeach()
 
-# The two ranks built one component each (their reduced blocks exchanged).
-if(SPREAD STREQUAL "OFF")
-  return()
-endif()
+# The two ranks built their own components (their reduced blocks
+# exchanged).
 file(READ "${base}/np2/${OUTPUT}/report.txt" report)
 string(FIND "${report}" "built on 2 MPI ranks" spread)
 if(spread EQUAL -1)

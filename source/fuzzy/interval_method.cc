@@ -126,6 +126,33 @@ namespace FuzzyContact
   }
 
 
+  FuzzyOutputBounds
+  bounds_on_ranks(const IntervalMethod           &method,
+                  const std::vector<FuzzyNumber> &parameters,
+                  const std::vector<double>      &alpha,
+                  const Response                 &response,
+                  const std::vector<std::string> &output_names,
+                  const MPI_Comm                  comm,
+                  const MPI_Comm                  solving)
+  {
+    if (solving == comm)
+      return method.bounds(parameters, alpha, response, output_names, comm);
+    // The lowest rank of @p comm among the solving ones sends the bounds.
+    const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
+    const unsigned int rank    = dealii::Utilities::MPI::this_mpi_process(comm);
+    const unsigned int root =
+      dealii::Utilities::MPI::min(solving != MPI_COMM_NULL ? rank : n_ranks,
+                                  comm);
+    AssertThrow(root < n_ranks,
+                dealii::ExcMessage("No MPI rank can evaluate the response."));
+    FuzzyOutputBounds result;
+    if (solving != MPI_COMM_NULL)
+      result =
+        method.bounds(parameters, alpha, response, output_names, solving);
+    return dealii::Utilities::MPI::broadcast(comm, result, root);
+  }
+
+
   std::vector<Interval>
   alpha_box(const std::vector<FuzzyNumber> &parameters, const double alpha)
   {

@@ -30,9 +30,9 @@
 // scene (a SceneState), so the reference solves exactly the problem the
 // fast path approximates.
 //
-// With MPI (`mpirun -np 2 step-4 ...`) the components' models are built on
-// different ranks, and the evaluations of every method are spread over
-// them: the same bounds, from as many evaluations as one process makes.
+// With MPI (`mpirun -np 2 step-4 ...`) the components are built on
+// different ranks and the evaluations spread over them: the same bounds,
+// from as many evaluations as one process makes.
 //
 // Usage: step-4 prm/step-4.prm
 
@@ -208,14 +208,8 @@ namespace Step4
                           " alpha levels: the exact solves (about number of "
                           "alpha levels x points per dimension ^ parameters)",
                         "lower one of these keys");
-      bool all_crisp = true;
-      for (const FuzzyParameter &p : fuzzy.parameters())
-        all_crisp = all_crisp && p.number.points()[0] == p.number.points()[3];
-      if (all_crisp)
-        warnings.push_back("warning: every fuzzy parameter is crisp (its "
-                           "support has no width): the outputs cannot "
-                           "change, and every membership function is a "
-                           "single value.");
+      if (!InputChecks::all_crisp_warning(fuzzy).empty())
+        warnings.push_back(InputChecks::all_crisp_warning(fuzzy));
     }
   };
 
@@ -322,6 +316,7 @@ namespace Step4
   {
     // Parameters that cannot change the answer are crisp here.
     const std::vector<FuzzyNumber> numbers = model->effective_numbers();
+    const std::vector<double>     &alpha   = results.alpha;
     results.inert                          = model->inert();
     const std::vector<std::string> names   = model->observations().names();
     const Response                 reduced = [&](const std::vector<double> &p) {
@@ -335,12 +330,15 @@ namespace Step4
         progress->advance();
       return values;
     };
-    // Every method through the IntervalMethod interface, timed.
+    // Every method through the IntervalMethod interface, timed; on the
+    // reduced model, by the ranks that can solve it.
     const auto bounds = [&](const IntervalMethod &method,
                             const Response       &response,
                             const std::string    &section) {
       TimerOutput::Scope scope(timer, section);
-      return method.bounds(numbers, results.alpha, response, names, comm);
+      const MPI_Comm     by =
+        &response == &reduced ? model->reduced_communicator() : comm;
+      return bounds_on_ranks(method, numbers, alpha, response, names, comm, by);
     };
 
     results.optimisation = bounds(OptimisationMethod(parameters.optimisation),

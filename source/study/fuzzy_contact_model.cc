@@ -114,12 +114,15 @@ namespace FuzzyContact
       }
 
     // Spread over the ranks, each assembles only the components it builds.
+    builder =
+      ReducedOrderModel::builders(scene.components.size(), varying, comm);
     std::vector<bool> assemble;
-    if (ReducedOrderModel::spreads_components(varying, comm))
+    if (Utilities::MPI::job_supports_mpi() &&
+        Utilities::MPI::n_mpi_processes(comm) > 1)
       {
         n_ranks_building = Utilities::MPI::n_mpi_processes(comm);
         for (unsigned int c = 0; c < scene.components.size(); ++c)
-          assemble.push_back(c % n_ranks_building ==
+          assemble.push_back(builder[c] ==
                              Utilities::MPI::this_mpi_process(comm));
       }
     bodies        = std::make_unique<ContactScene>(scene,
@@ -145,6 +148,35 @@ namespace FuzzyContact
                                       solver_name == "fl2c" ? "FL2C"
                                                             : solver_name);
     full_model = std::make_unique<FullOrderModel>(*bodies, outputs->dofs());
+
+    // The ranks that can solve the reduced model (all but where some
+    // components are re-analysed: the first rank).
+    reduced_ranks = comm;
+    if (n_ranks_building > 1 &&
+        Utilities::MPI::min(reduced_model->solves_here() ? 1 : 0, comm) == 0)
+      {
+        const int ierr =
+          MPI_Comm_split(comm,
+                         reduced_model->solves_here() ? 0 : MPI_UNDEFINED,
+                         Utilities::MPI::this_mpi_process(comm),
+                         &reduced_ranks);
+        AssertThrowMPI(ierr);
+        own_reduced_ranks = true;
+      }
+  }
+
+
+  FuzzyContactModel::~FuzzyContactModel()
+  {
+    if (own_reduced_ranks && reduced_ranks != MPI_COMM_NULL)
+      MPI_Comm_free(&reduced_ranks);
+  }
+
+
+  MPI_Comm
+  FuzzyContactModel::reduced_communicator() const
+  {
+    return reduced_ranks;
   }
 
 
@@ -171,9 +203,9 @@ namespace FuzzyContact
         // Where the components are spread over the ranks, each computes the
         // modes of its own components only.
         std::vector<bool> owned;
-        if (ReducedOrderModel::spreads_components(varying, comm))
+        if (n_ranks_building > 1)
           for (unsigned int c = 0; c < bodies->n_components(); ++c)
-            owned.push_back(c % Utilities::MPI::n_mpi_processes(comm) ==
+            owned.push_back(builder[c] ==
                             Utilities::MPI::this_mpi_process(comm));
         return component_modes(*bodies, settings.modal, timer, owned);
       }
@@ -327,11 +359,8 @@ namespace FuzzyContact
   {
     if (n_ranks_building <= 1)
       return 0;
-    Timer                     wall;
-    std::vector<unsigned int> owner;
-    for (unsigned int c = 0; c < bodies->n_components(); ++c)
-      owner.push_back(c % n_ranks_building);
-    bodies->share_stiffness_factorisations(owner, comm, timer);
+    Timer wall;
+    bodies->share_stiffness_factorisations(builder, comm, timer);
     return Utilities::MPI::max(wall.wall_time(), comm);
   }
 
@@ -375,9 +404,17 @@ namespace FuzzyContact
     if (!skipped_stages.empty())
       out << "  " << skipped_stages << "\n";
     if (n_ranks_building > 1)
-      out << "  the components' reduced models were built on "
-          << n_ranks_building << " MPI ranks (component c on rank c mod "
-          << n_ranks_building << "), their reduced blocks exchanged\n";
+      {
+        out << "  the components' reduced models were built on "
+            << n_ranks_building << " MPI ranks (";
+        for (unsigned int c = 0; c < builder.size(); ++c)
+          out << (c > 0 ? ", " : "") << bodies->component(c).name()
+              << " on rank " << builder[c];
+        out << "), their reduced blocks exchanged\n";
+        if (reduced_ranks != comm)
+          out << "  the reduced model is solved on the first rank only: it "
+                 "holds the reanalyses of the re-analysed components\n";
+      }
     out << "  contact: " << bodies->interface().n_nodes() << " slave nodes in "
         << bodies->interface().n_pairs() << " contact pair(s), solved by "
         << (solver_name == "fl2c" ? "FL2C (fuzzy regulators"

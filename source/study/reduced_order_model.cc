@@ -5,6 +5,7 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -86,6 +87,8 @@ namespace FuzzyContact
     // HPTP: the reanalysis and the projections that turn Y(p) into the
     // component's reduced matrices.
     std::unique_ptr<ParameterIndependentReanalysis> reanalysis;
+    // (on the rank that built it) and its order and basis size (on all)
+    unsigned int reanalysis_order = 0, reanalysis_vectors = 0;
     std::vector<FullMatrix<double>> T_K_psi;    // T^T K_z Psi per zone
     std::vector<FullMatrix<double>> psi_K_psi;  // Psi^T K_z Psi per zone
     FullMatrix<double>              C_T, C_psi; // C T, C Psi
@@ -139,21 +142,17 @@ namespace FuzzyContact
         models.push_back(std::move(m));
       }
 
-    // With several ranks, component c is built on rank c mod n, and its
-    // blocks of the reduced contact problem are formed there and sent to
-    // all (unless a component is re-analysed).
-    const bool         spread = spreads_components(varying, comm);
-    const unsigned int n_ranks =
-      spread ? Utilities::MPI::n_mpi_processes(comm) : 1;
+    // With several ranks, each component is built on one (builders()),
+    // with its reanalysis, and its blocks of the reduced contact problem
+    // are formed there and sent to all.
+    const std::vector<unsigned int> owner = builders(n_c, varying, comm);
+    const bool spread = Utilities::MPI::job_supports_mpi() &&
+                        Utilities::MPI::n_mpi_processes(comm) > 1;
     const unsigned int rank =
       spread ? Utilities::MPI::this_mpi_process(comm) : 0;
-    std::vector<unsigned int> owner;
     for (unsigned int c = 0; c < n_c; ++c)
-      {
-        owner.push_back(c % n_ranks);
-        if (owner[c] == rank)
-          build_component(*models[c], c, observed[c], timer);
-      }
+      if (owner[c] == rank)
+        build_component(*models[c], c, observed[c], timer);
     std::vector<ReducedComponentMatrices> nominal;
     for (unsigned int c = 0; c < n_c; ++c)
       {
@@ -170,7 +169,7 @@ namespace FuzzyContact
           m.n_corrections > 0;
         nominal.push_back(m.split ? columns(m.nominal_matrices, 0, m.n_modes)
                                   : m.nominal_matrices);
-        if (m.hptp)
+        if (m.hptp && owner[c] == rank)
           build_reanalysis(m, c, varying, timer);
       }
 
@@ -203,17 +202,37 @@ namespace FuzzyContact
   }
 
 
-  bool
-  ReducedOrderModel::spreads_components(
-    const std::vector<VaryingQuantity> &varying,
-    const MPI_Comm                      comm)
+  std::vector<unsigned int>
+  ReducedOrderModel::builders(const unsigned int                  n_components,
+                              const std::vector<VaryingQuantity> &varying,
+                              const MPI_Comm                      comm)
   {
     // (MPI_COMM_SELF, or a program that did not initialise MPI)
-    if (!Utilities::MPI::job_supports_mpi() ||
-        Utilities::MPI::n_mpi_processes(comm) == 1)
-      return false;
+    const unsigned int n_ranks = Utilities::MPI::job_supports_mpi()
+                                   ? Utilities::MPI::n_mpi_processes(comm)
+                                   : 1;
+    std::vector<bool>  reanalysed(n_components, false);
     for (const VaryingQuantity &v : varying)
       if (v.quantity.is_material() && v.quantity.zone >= 0)
+        reanalysed[v.quantity.component] = true;
+    const bool any =
+      std::find(reanalysed.begin(), reanalysed.end(), true) != reanalysed.end();
+    std::vector<unsigned int> owner(n_components, 0);
+    unsigned int              next = 0;
+    for (unsigned int c = 0; c < n_components && n_ranks > 1; ++c)
+      if (!any)
+        owner[c] = c % n_ranks;
+      else if (!reanalysed[c])
+        owner[c] = 1 + next++ % (n_ranks - 1);
+    return owner;
+  }
+
+
+  bool
+  ReducedOrderModel::solves_here() const
+  {
+    for (const auto &m : models)
+      if (m->hptp && m->reanalysis == nullptr)
         return false;
     return true;
   }
@@ -255,8 +274,8 @@ namespace FuzzyContact
 
   // Sends what the other ranks need of a component built on rank @p owner
   // besides its blocks of the reduced contact problem (ReducedContactModel
-  // sends those): the sizes of its basis and its eigenvalues (for the
-  // description).
+  // sends those): the sizes of its basis and of its reanalysis, and its
+  // eigenvalues (for the description).
   void
   ReducedOrderModel::exchange_component(ComponentModel    &m,
                                         const unsigned int owner,
@@ -265,10 +284,14 @@ namespace FuzzyContact
     const std::vector<unsigned int> sizes =
       Utilities::MPI::broadcast(comm,
                                 std::vector<unsigned int>{m.n_modes,
-                                                          m.n_corrections},
+                                                          m.n_corrections,
+                                                          m.reanalysis_order,
+                                                          m.reanalysis_vectors},
                                 owner);
-    m.n_modes       = sizes[0];
-    m.n_corrections = sizes[1];
+    m.n_modes            = sizes[0];
+    m.n_corrections      = sizes[1];
+    m.reanalysis_order   = sizes[2];
+    m.reanalysis_vectors = sizes[3];
     m.modes.eigenvalues =
       Utilities::MPI::broadcast(comm, m.modes.eigenvalues, owner);
   }
@@ -322,6 +345,8 @@ namespace FuzzyContact
       m.reanalysis->select_order(corners,
                                  rs.order_tolerance,
                                  rs.residual_check);
+      m.reanalysis_order   = m.reanalysis->order();
+      m.reanalysis_vectors = m.reanalysis->basis_size(m.reanalysis_order);
     }
 
     auto                scope = timer_section(timer, "reanalysis projections");
@@ -490,6 +515,11 @@ namespace FuzzyContact
   void
   ReducedOrderModel::set_state(const SceneState &state)
   {
+    AssertThrow(solves_here(),
+                ExcMessage("ReducedOrderModel: this MPI rank does not hold "
+                           "the reanalysis of every re-analysed component "
+                           "(they were built on the first rank); it cannot "
+                           "solve."));
     const ContactInterface &interface = bodies.interface();
     AssertThrow(state.zone_moduli.size() == models.size(),
                 ExcMessage("ReducedOrderModel: the state is not one of this "
@@ -599,7 +629,7 @@ namespace FuzzyContact
   {
     std::vector<unsigned int> n;
     for (const auto &m : models)
-      n.push_back(m->reanalysis ? m->reanalysis->order() : 0);
+      n.push_back(m->hptp ? m->reanalysis_order : 0);
     return n;
   }
 
@@ -629,8 +659,7 @@ namespace FuzzyContact
               out << " " << q.name;
             if (m.hptp)
               out << ": parameter-independent HPTP, order "
-                  << m.reanalysis->order() << " ("
-                  << m.reanalysis->basis_size(m.reanalysis->order())
+                  << m.reanalysis_order << " (" << m.reanalysis_vectors
                   << " basis vectors)";
             else
               out << ": exact scaling of the stiffness"

@@ -165,6 +165,14 @@ namespace FuzzyContact
      * optimisation method only; empty for the sampling methods).
      */
     std::vector<std::vector<BoundQuality>> lower_quality, upper_quality;
+
+    template <class Archive>
+    void
+    serialize(Archive &ar, const unsigned int)
+    {
+      ar &alpha &bounds &argmin &argmax &n_evaluations &wall_time &notes
+        &lower_quality &upper_quality;
+    }
   };
 
   /**
@@ -175,6 +183,25 @@ namespace FuzzyContact
   max_relative_difference(const std::vector<Interval> &bounds,
                           const std::vector<Interval> &reference,
                           const double                 floor = 0);
+
+  class IntervalMethod;
+
+  /**
+   * @p method's bounds of @p response, computed on @p solving (a
+   * communicator of those ranks of @p comm that can evaluate @p response,
+   * for instance FuzzyContactModel::reduced_communicator(); MPI_COMM_NULL
+   * on the others) and sent to every rank of @p comm. With
+   * @p solving = @p comm, method.bounds() on @p comm. Collective on
+   * @p comm.
+   */
+  FuzzyOutputBounds
+  bounds_on_ranks(const IntervalMethod           &method,
+                  const std::vector<FuzzyNumber> &parameters,
+                  const std::vector<double>      &alpha,
+                  const Response                 &response,
+                  const std::vector<std::string> &output_names,
+                  const MPI_Comm                  comm,
+                  const MPI_Comm                  solving);
 
   /** The interface of the interval methods (see the top of this file). */
   class IntervalMethod

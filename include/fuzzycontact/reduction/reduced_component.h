@@ -77,7 +77,7 @@ namespace FuzzyContact
     std::vector<types::global_dof_index> observed_dofs;
     FullMatrix<double>                   observation;
 
-    /** For Utilities::MPI::broadcast (the ranks exchange these blocks). */
+    /** For Utilities::MPI::broadcast and other serialisation. */
     template <class Archive>
     void
     serialize(Archive &archive, const unsigned int)

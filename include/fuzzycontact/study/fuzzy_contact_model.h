@@ -101,10 +101,11 @@ namespace FuzzyContact
      * parameters of @p fuzzy (bound to the same scene) and the outputs
      * named in @p outputs. Stages are timed in @p timer if given.
      *
-     * With several ranks in @p comm (and no re-analysed component, see
-     * ReducedOrderModel::spreads_components()), component c is assembled,
-     * factorised and reduced on rank c mod n only, its reduced blocks sent
-     * to all; the other ranks mesh it (for the contact interface and the
+     * With several ranks in @p comm, each component is assembled,
+     * factorised and reduced on one rank (ReducedOrderModel::builders():
+     * component c on rank c mod n, or the re-analysed components on the
+     * first rank and the others on the others), its reduced blocks sent to
+     * all; the other ranks mesh it (for the contact interface and the
      * outputs) but do not assemble it.
      */
     FuzzyContactModel(const Scene                     &scene,
@@ -113,6 +114,18 @@ namespace FuzzyContact
                       const FuzzyContactModelSettings &settings,
                       TimerOutput                     *timer = nullptr,
                       const MPI_Comm                   comm  = MPI_COMM_SELF);
+
+    ~FuzzyContactModel();
+
+    /**
+     * The ranks that can evaluate reduced(): the communicator of the
+     * constructor, or, where components are re-analysed and several ranks
+     * build them, one of the first rank alone (MPI_COMM_NULL on the
+     * others, which must not call reduced()). Interval methods on the
+     * reduced model run on it (bounds_on_ranks()).
+     */
+    MPI_Comm
+    reduced_communicator() const;
 
     /** The outputs, in the order of the values returned. */
     const Observations &
@@ -228,6 +241,9 @@ namespace FuzzyContact
     std::string                        skipped_stages;
     std::vector<std::string>           inert_parameters;
     MPI_Comm                           comm;
+    MPI_Comm                           reduced_ranks     = MPI_COMM_NULL;
+    bool                               own_reduced_ranks = false;
+    std::vector<unsigned int>          builder; // the rank of each component
     unsigned int                       n_ranks_building = 1;
   };
 } // namespace FuzzyContact
