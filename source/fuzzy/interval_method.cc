@@ -1,4 +1,5 @@
 #include <fuzzycontact/base/input.h>
+#include <fuzzycontact/base/mpi_wait.h>
 #include <fuzzycontact/fuzzy/interval_method.h>
 
 #include <deal.II/base/exceptions.h>
@@ -149,6 +150,7 @@ namespace FuzzyContact
     if (solving != MPI_COMM_NULL)
       result =
         method.bounds(parameters, alpha, response, output_names, solving);
+    wait_for_all_ranks(comm); // (the others, without spinning)
     return dealii::Utilities::MPI::broadcast(comm, result, root);
   }
 

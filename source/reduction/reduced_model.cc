@@ -1,3 +1,4 @@
+#include <fuzzycontact/base/mpi_wait.h>
 #include <fuzzycontact/reduction/reduced_model.h>
 
 #include <deal.II/base/exceptions.h>
@@ -242,6 +243,7 @@ namespace FuzzyContact
           variable[c].matrices = std::move(components[c]);
           compute_blocks(variable[c]);
         }
+    wait_for_all_ranks(comm);
     for (unsigned int c = 0; c < components.size(); ++c)
       {
         Part received = Utilities::MPI::broadcast(comm, variable[c], owner[c]);
