@@ -1,3 +1,4 @@
+#include <fuzzycontact/base/mpi_wait.h>
 #include <fuzzycontact/fuzzy/bound_proof.h>
 
 #include <deal.II/base/exceptions.h>
@@ -47,9 +48,12 @@ namespace FuzzyContact
       for (auto &[i, v] : mine)
         values[i] = std::move(v);
     else
-      for (auto &part : Utilities::MPI::all_gather(comm, mine))
-        for (auto &[i, v] : part)
-          values[i] = std::move(v);
+      {
+        wait_for_all_ranks(comm); // (unevenly long solves: without spinning)
+        for (auto &part : Utilities::MPI::all_gather(comm, mine))
+          for (auto &[i, v] : part)
+            values[i] = std::move(v);
+      }
 
     BoundProofs        proofs;
     const unsigned int n_outputs = bounds.bounds.size();

@@ -1,3 +1,4 @@
+#include <fuzzycontact/base/mpi_wait.h>
 #include <fuzzycontact/fuzzy/sampling_method.h>
 
 #include <deal.II/base/exceptions.h>
@@ -48,9 +49,12 @@ namespace FuzzyContact
         for (auto &[i, out] : mine)
           outputs[i] = std::move(out);
       else
-        for (auto &part : Utilities::MPI::all_gather(comm, mine))
-          for (auto &[i, out] : part)
-            outputs[i] = std::move(out);
+        {
+          wait_for_all_ranks(comm); // (unevenly long solves: no spinning)
+          for (auto &part : Utilities::MPI::all_gather(comm, mine))
+            for (auto &[i, out] : part)
+              outputs[i] = std::move(out);
+        }
       return outputs;
     }
 
