@@ -1,7 +1,10 @@
 # Runs a step program once alone and once behind MPI_LAUNCHER (e.g.
 # mpiexec -n 2), through run_program.cmake, and checks that every bound in
-# results.json is the same number in both runs, and that the second run
-# spread the components' builds over its ranks.
+# results.json is the same number in both runs, that every method made as
+# many evaluations in both, and that the second run spread the components'
+# builds over its ranks; RANK_ASSEMBLED and
+# RANK_FACTORISED (e.g. "P1|P2") name the components each rank must have
+# assembled and factorised, and no others.
 set(base "${WORKDIR}")
 set(EXPECT success)
 
@@ -32,7 +35,42 @@ foreach(k RANGE ${last})
 endforeach()
 message(STATUS "all bounds identical with 1 and 2 processes")
 
-# The two ranks built one component each (their reduced blocks exchanged).
+# One evaluation cache shared by the ranks: each method evaluates as many
+# distinct points with 2 processes as with one.
+string(JSON methods LENGTH "${one}" evaluations)
+math(EXPR last "${methods} - 1")
+foreach(m RANGE ${last})
+  string(JSON method MEMBER "${one}" evaluations ${m})
+  string(JSON a GET "${one}" evaluations ${method})
+  string(JSON b GET "${two}" evaluations ${method})
+  if(NOT a EQUAL b)
+    message(FATAL_ERROR "${method}: ${a} evaluations with 1 process, ${b} with 2")
+  endif()
+endforeach()
+message(STATUS "as many evaluations with 1 and 2 processes")
+
+# Each rank assembled (RANK_ASSEMBLED) and factorised (RANK_FACTORISED)
+# the components named for it only (component c on rank c mod 2), through
+# the proofs and the Extension Principle too.
+foreach(what assembled factorised)
+  string(TOUPPER "RANK_${what}" variable)
+  if(NOT DEFINED ${variable})
+    continue()
+  endif()
+  string(REPLACE "|" ";" expected "${${variable}}")
+  foreach(rank 0 1)
+    list(GET expected ${rank} names)
+    string(JSON list GET "${two}" ranks ${rank} ${what})
+    string(REGEX REPLACE "[][\" \n]" "" list "${list}")
+    if(NOT list STREQUAL names)
+      message(FATAL_ERROR "rank ${rank} ${what} ${list}, expected ${names}")
+    endif()
+  endforeach()
+  message(STATUS "each rank ${what} the components named for it: ${${variable}}")
+endforeach()
+
+# The two ranks built their own components (their reduced blocks
+# exchanged).
 file(READ "${base}/np2/${OUTPUT}/report.txt" report)
 string(FIND "${report}" "built on 2 MPI ranks" spread)
 if(spread EQUAL -1)

@@ -526,6 +526,80 @@ TEST(Component, ZoneMatricesSumToTheDirectAssembly)
               1e-15);
 }
 
+// A component built without its matrices (an MPI rank that does not build
+// its reduced model) assembles them where they are first asked for, and
+// then has the very numbers of one assembled when it was built, also after
+// a change of materials made before: the face loads alone without any
+// matrix, the loads of a prescribed displacement (patch test, upper body)
+// with them.
+TEST(Component, AssembledOnFirstUseAsWhenBuilt)
+{
+  const Scene patch =
+    Scene::read(std::string(FUZZYCONTACT_SOURCE_DIR) + "/prm/patch-test.prm");
+  const Scene zones = three_zone_scene();
+  for (const ComponentDescription *d :
+       {&zones.components[0], &patch.components[0], &patch.components[1]})
+    {
+      const PlaneModel model =
+        d == &zones.components[0] ? zones.plane_model : patch.plane_model;
+      Component built(*d, model, 1);
+      Component lazy(*d, model, 1, nullptr, {}, /*assemble=*/false);
+      EXPECT_TRUE(built.is_assembled());
+      EXPECT_FALSE(lazy.is_assembled());
+      bool displaced = false;
+      for (const EdgeLoad &load : d->loads)
+        displaced = displaced || load.is_displacement;
+      for (unsigned int l = 0; l < d->loads.size() && !displaced; ++l)
+        EXPECT_EQ(lazy.unit_load_vector(l), built.unit_load_vector(l));
+      EXPECT_EQ(lazy.is_assembled(), false) << d->name;
+
+      std::vector<double> moduli    = built.zone_moduli(),
+                          densities = built.zone_densities();
+      for (unsigned int z = 0; z < moduli.size(); ++z)
+        {
+          moduli[z] *= 1.1 + 0.1 * z;
+          densities[z] *= 0.9;
+        }
+      built.set_zone_materials(moduli, densities);
+      lazy.set_zone_materials(moduli, densities);
+      EXPECT_EQ(lazy.load_vector(), built.load_vector()) << d->name;
+      EXPECT_EQ(lazy.is_assembled(), displaced) << d->name;
+      for (const auto &[a, b] :
+           {std::make_pair(&lazy.stiffness_matrix(), &built.stiffness_matrix()),
+            std::make_pair(&lazy.mass_matrix(), &built.mass_matrix())})
+        {
+          ASSERT_EQ(a->n_nonzero_elements(), b->n_nonzero_elements());
+          for (const auto &entry : *b)
+            EXPECT_EQ(a->el(entry.row(), entry.column()), entry.value());
+        }
+      EXPECT_TRUE(lazy.is_assembled());
+    }
+}
+
+// The forces of a prescribed displacement handed over from a component
+// that assembled them (another MPI rank's) give the loads without any
+// assembly, the same numbers, also after a change of materials.
+TEST(Component, DisplacementLoadsGivenNeedNoAssembly)
+{
+  const Scene patch =
+    Scene::read(std::string(FUZZYCONTACT_SOURCE_DIR) + "/prm/patch-test.prm");
+  const ComponentDescription &d = patch.components[0];
+  Component                   built(d, patch.plane_model, 1);
+  Component lazy(d, patch.plane_model, 1, nullptr, {}, /*assemble=*/false);
+  ASSERT_EQ(built.displacement_zone_loads().size(), 1u);
+  lazy.set_displacement_zone_loads(built.displacement_zone_loads());
+  for (unsigned int l = 0; l < d.loads.size(); ++l)
+    EXPECT_EQ(lazy.unit_load_vector(l), built.unit_load_vector(l));
+  built.set_zone_materials({250e9}, {7000});
+  lazy.set_zone_materials({250e9}, {7000});
+  EXPECT_EQ(lazy.load_vector(), built.load_vector());
+  EXPECT_GT(lazy.load_vector().linfty_norm(), 0.);
+  EXPECT_FALSE(lazy.is_assembled());
+  // Assembled later (an independent analysis), the forces stay the same.
+  lazy.stiffness_matrix();
+  EXPECT_EQ(lazy.displacement_zone_loads(), built.displacement_zone_loads());
+}
+
 TEST(Component, EdgeLoadHasTheDeclaredResultant)
 {
   const Scene     scene = three_zone_scene();

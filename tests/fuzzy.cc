@@ -590,6 +590,65 @@ TEST(IntervalMethods, CacheCountsDistinctEvaluations)
   EXPECT_EQ(cache.n_evaluations(), 2u);
 }
 
+// prefetch() evaluates the points not known yet, each once, and counts
+// them as evaluations made here; the values are those of the response.
+TEST(IntervalMethods, CachePrefetchEvaluatesNewPointsOnce)
+{
+  unsigned int    calls = 0;
+  EvaluationCache cache([&](const std::vector<double> &p) {
+    ++calls;
+    return std::vector<double>{2 * p[0]};
+  });
+  cache({2.0});
+  cache.prefetch({{1.0}, {2.0}, {1.0}, {3.0}});
+  EXPECT_EQ(calls, 3u);
+  EXPECT_EQ(cache.n_evaluations(), 3u);
+  EXPECT_EQ(cache.n_evaluated_here(), 3u);
+  EXPECT_EQ(cache({3.0})[0], 6.0);
+  cache.prefetch({{3.0}});
+  EXPECT_EQ(calls, 3u);
+}
+
+// The optimisation method evaluates every level's fixed points ahead
+// (spread over the ranks): they must be exactly the points of the global
+// stage apart from its seeds. After prefetching them, the global stage
+// evaluates nothing new but its seeds that are not among them.
+TEST(GlobalStage, FixedPointsAreThePointsOfTheStageButItsSeeds)
+{
+  using namespace LocalOptimisation;
+  const std::vector<FuzzyNumber> parameters = {FuzzyNumber::triangular(1, 2, 4),
+                                               FuzzyNumber::triangular(-1,
+                                                                       0,
+                                                                       3)};
+  unsigned int                   calls      = 0;
+  EvaluationCache                cache([&](const std::vector<double> &p) {
+    ++calls;
+    return std::vector<double>{p[0] * p[0] - 0.3 * p[1]};
+  });
+  const Normalisation            normalisation(parameters);
+  const auto                     design = latin_hypercube(8, 2, 3);
+  for (const double alpha : {0., 0.5, 1.})
+    {
+      const auto [lo, hi] = normalisation.box(parameters, alpha);
+      const std::vector<VectorType> fixed = fixed_points(design, lo, hi);
+      // 4 vertices and the design, or the one point of the core
+      EXPECT_EQ(fixed.size(), alpha < 1 ? 4u + 8u : 4u);
+      std::vector<std::vector<double>> points;
+      for (const VectorType &x : fixed)
+        points.push_back(normalisation.parameters(x));
+      cache.prefetch(points);
+      OutputObjective objective(cache, normalisation, 0, 1., 1., 1e-4, lo, hi);
+      VectorType      seed(2);
+      seed[0] = 0.5 * (lo[0] + hi[0]) + 1e-3 * (hi[0] - lo[0]);
+      seed[1] = lo[1];
+      const unsigned int before = calls;
+      global_stage(objective, design, {}, lo, hi);
+      EXPECT_EQ(calls, before);
+      global_stage(objective, design, {seed}, lo, hi);
+      EXPECT_EQ(calls, before + (alpha < 1 ? 1u : 0u));
+    }
+}
+
 // The three methods behind their interface, on a response monotone in each
 // parameter over the boxes (so that all three are exact), with a
 // trapezoidal parameter (a core of non-zero width):

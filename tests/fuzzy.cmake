@@ -109,8 +109,81 @@ add_test(NAME step-4.mpi_np2_same_as_np1
     -DOUTPUT=step-4-output
     ${step4_quick}
     "-DMPI_LAUNCHER=${DEAL_II_MPIEXEC}|${DEAL_II_MPIEXEC_NUMPROC_FLAG}|2"
+    "-DRANK_ASSEMBLED=P1|P2"
+    "-DRANK_FACTORISED=P1|P2"
     -P ${CMAKE_CURRENT_SOURCE_DIR}/compare_mpi_runs.cmake)
 set_tests_properties(step-4.mpi_np2_same_as_np1 PROPERTIES
+  ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1"
+  PROCESSORS 2)
+
+# The same on the zone study: the re-analysed component P1 is built on the
+# first rank, which alone solves the reduced model; P2 on the second, which
+# assembles and factorises P1 too for its share of the proofs (each at new
+# zone moduli of P1), but the first never touches P2.
+add_test(NAME step-4.zones_mpi_np2_same_as_np1
+  COMMAND ${CMAKE_COMMAND}
+    -DPROGRAM=$<TARGET_FILE:step-4>
+    -DPRM=${CMAKE_SOURCE_DIR}/prm/step-4-zones.prm
+    -DSCENE=${CMAKE_SOURCE_DIR}/prm/overlap-zones.prm
+    -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/work/step-4.zones_mpi
+    -DOUTPUT=step-4-zones-output
+    ${step4_quick}
+    "-DMPI_LAUNCHER=${DEAL_II_MPIEXEC}|${DEAL_II_MPIEXEC_NUMPROC_FLAG}|2"
+    "-DRANK_ASSEMBLED=P1|P1,P2"
+    "-DRANK_FACTORISED=P1|P1,P2"
+    -P ${CMAKE_CURRENT_SOURCE_DIR}/compare_mpi_runs.cmake)
+set_tests_properties(step-4.zones_mpi_np2_same_as_np1 PROPERTIES
+  ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1"
+  PROCESSORS 2)
+
+# A prescribed displacement (the roller of prm/hertz.prm, curved meshes):
+# its loads come from the stiffness, and the rank that does not build the
+# roller receives them instead of assembling it.
+add_test(NAME step-4.hertz_mpi_np2_same_as_np1
+  COMMAND ${CMAKE_COMMAND}
+    -DPROGRAM=$<TARGET_FILE:step-4>
+    -DPRM=${CMAKE_SOURCE_DIR}/prm/step-4-hertz.prm
+    -DSCENE=${CMAKE_SOURCE_DIR}/prm/hertz.prm
+    -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/work/step-4.hertz_mpi
+    -DOUTPUT=step-4-hertz-output
+    -DEXTRA_FILES=${CMAKE_SOURCE_DIR}/prm/meshes
+    "-DEDIT_FILE=step"
+    "-DEDIT_FROM=set number of alpha levels = 11"
+    "-DEDIT_TO=set number of alpha levels = 2"
+    "-DEDIT2_FILE=step"
+    "-DEDIT2_FROM=set points per dimension = 4"
+    "-DEDIT2_TO=set points per dimension = 3"
+    "-DMPI_LAUNCHER=${DEAL_II_MPIEXEC}|${DEAL_II_MPIEXEC_NUMPROC_FLAG}|2"
+    "-DRANK_ASSEMBLED=Roller|Block"
+    "-DRANK_FACTORISED=Roller|Block"
+    -P ${CMAKE_CURRENT_SOURCE_DIR}/compare_mpi_runs.cmake)
+set_tests_properties(step-4.hertz_mpi_np2_same_as_np1 PROPERTIES
+  ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1"
+  PROCESSORS 2)
+
+# Three components on two ranks (components 0 and 2 on rank 0); its
+# reference is made of independent analyses, for which every rank assembles
+# every component.
+add_test(NAME step-4.three_beams_mpi_np2_same_as_np1
+  COMMAND ${CMAKE_COMMAND}
+    -DPROGRAM=$<TARGET_FILE:step-4>
+    -DPRM=${CMAKE_SOURCE_DIR}/prm/step-4-three-beams.prm
+    -DSCENE=${CMAKE_SOURCE_DIR}/prm/three-beams.prm
+    -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/work/step-4.three_beams_mpi
+    -DOUTPUT=step-4-three-beams-output
+    "-DEDIT_FILE=step"
+    "-DEDIT_FROM=set mesh refinements       = 2"
+    "-DEDIT_TO=set mesh refinements       = 0"
+    "-DEDIT2_FILE=step"
+    "-DEDIT2_FROM=set number of alpha levels = 6"
+    "-DEDIT2_TO=set number of alpha levels = 3"
+    "-DEDIT3_FILE=step"
+    "-DEDIT3_FROM=set points per dimension = 4"
+    "-DEDIT3_TO=set points per dimension = 3"
+    "-DMPI_LAUNCHER=${DEAL_II_MPIEXEC}|${DEAL_II_MPIEXEC_NUMPROC_FLAG}|2"
+    "-DRANK_FACTORISED=P1,P3|P2"
+    -P ${CMAKE_CURRENT_SOURCE_DIR}/compare_mpi_runs.cmake)
+set_tests_properties(step-4.three_beams_mpi_np2_same_as_np1 PROPERTIES
   ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1"
   PROCESSORS 2)
 

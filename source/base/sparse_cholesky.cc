@@ -9,6 +9,7 @@
 #include <list>
 #include <mutex>
 #include <suitesparse/cholmod.h>
+#include <type_traits>
 
 namespace FuzzyContact
 {
@@ -409,6 +410,179 @@ namespace FuzzyContact
       for (types::blas_int j = i + 1; j < m; ++j)
         G(i, j) = G(j, i);
     return G;
+  }
+
+
+  namespace
+  {
+    // Starts the broadcast of @p n entries of @p data from @p root (in
+    // pieces that an int counts), adding its requests to @p requests.
+    template <typename T>
+    void
+    start_broadcast(T                        *data,
+                    const std::size_t         n,
+                    const unsigned int        root,
+                    const MPI_Comm            comm,
+                    std::vector<MPI_Request> &requests)
+    {
+      static_assert(std::is_same<T, double>::value || sizeof(T) == 8,
+                    "64-bit integers or doubles");
+      const MPI_Datatype type =
+        std::is_same<T, double>::value ? MPI_DOUBLE : MPI_INT64_T;
+      constexpr std::size_t piece = std::size_t(1) << 30;
+      for (std::size_t begin = 0; begin < n; begin += piece)
+        {
+          requests.emplace_back();
+          const int ierr =
+            MPI_Ibcast(data + begin,
+                       static_cast<int>(std::min(piece, n - begin)),
+                       type,
+                       root,
+                       comm,
+                       &requests.back());
+          AssertThrowMPI(ierr);
+        }
+    }
+  } // namespace
+
+
+  std::vector<std::shared_ptr<const SparseCholesky>>
+  SparseCholesky::broadcast(
+    const std::vector<std::shared_ptr<const SparseCholesky>> &factorisations,
+    const std::vector<unsigned int>                          &roots,
+    const MPI_Comm                                            comm)
+  {
+    AssertDimension(factorisations.size(), roots.size());
+    const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+    const std::size_t  n_f  = roots.size();
+    // The sizes and flags of every factor (supernodal LL^T, factorize()).
+    std::vector<std::vector<Index>> headers(n_f, std::vector<Index>(12));
+    for (std::size_t f = 0; f < n_f; ++f)
+      if (rank == roots[f])
+        {
+          const auto &F = factorisations[f];
+          AssertThrow(F != nullptr && F->data->factor != nullptr,
+                      ExcMessage("SparseCholesky::broadcast: the root has "
+                                 "no factorisation to send."));
+          const cholmod_factor &L = *F->data->factor;
+          Assert(L.is_super && L.is_ll && L.xtype == CHOLMOD_REAL,
+                 ExcInternalError());
+          headers[f] = {static_cast<Index>(L.n),
+                        static_cast<Index>(L.minor),
+                        static_cast<Index>(L.nsuper),
+                        static_cast<Index>(L.ssize),
+                        static_cast<Index>(L.xsize),
+                        static_cast<Index>(L.maxcsize),
+                        static_cast<Index>(L.maxesize),
+                        L.ordering,
+                        L.is_monotonic,
+                        static_cast<Index>(F->data->common.lnz),
+                        static_cast<Index>(F->trailing.size()),
+                        0};
+        }
+    std::vector<MPI_Request> requests;
+    for (std::size_t f = 0; f < n_f; ++f)
+      start_broadcast(headers[f].data(), 12, roots[f], comm, requests);
+    int ierr =
+      MPI_Waitall(requests.size(), requests.data(), MPI_STATUSES_IGNORE);
+    AssertThrowMPI(ierr);
+    requests.clear();
+
+    // Every factor's arrays at once: the roots send while they receive.
+    std::vector<std::shared_ptr<const SparseCholesky>> result(n_f);
+    std::vector<std::vector<Index>>                    trailing(n_f);
+    for (std::size_t f = 0; f < n_f; ++f)
+      {
+        const std::vector<Index> &h = headers[f];
+        const std::size_t n = h[0], nsuper = h[2], ssize = h[3], xsize = h[4];
+        trailing[f].resize(h[10]);
+        cholmod_factor *L;
+        if (rank == roots[f])
+          {
+            result[f] = factorisations[f];
+            L         = factorisations[f]->data->factor;
+            std::copy(factorisations[f]->trailing.begin(),
+                      factorisations[f]->trailing.end(),
+                      trailing[f].begin());
+          }
+        else
+          {
+            // An empty factor of CHOLMOD's own allocation, made
+            // supernodal LL^T with arrays of the root's sizes (freed by
+            // CHOLMOD).
+            auto            copy   = std::make_shared<SparseCholesky>();
+            cholmod_common &common = copy->data->common;
+            L                      = cholmod_l_allocate_factor(n, &common);
+            AssertThrow(L != nullptr,
+                        ExcMessage("CHOLMOD could not allocate a factor of " +
+                                   std::to_string(n) + " rows."));
+            copy->data->factor  = L;
+            const auto allocate = [&](const std::size_t count,
+                                      const std::size_t size) {
+              void *p = cholmod_l_malloc(count, size, &common);
+              AssertThrow(p != nullptr || count == 0,
+                          ExcMessage("CHOLMOD could not allocate a factor "
+                                     "received from another MPI rank (out "
+                                     "of memory)."));
+              return p;
+            };
+            L->super        = allocate(nsuper + 1, sizeof(Index));
+            L->pi           = allocate(nsuper + 1, sizeof(Index));
+            L->px           = allocate(nsuper + 1, sizeof(Index));
+            L->s            = allocate(ssize, sizeof(Index));
+            L->x            = allocate(xsize, sizeof(double));
+            L->minor        = h[1];
+            L->nsuper       = nsuper;
+            L->ssize        = ssize;
+            L->xsize        = xsize;
+            L->maxcsize     = h[5];
+            L->maxesize     = h[6];
+            L->ordering     = h[7];
+            L->is_monotonic = h[8];
+            L->is_super     = 1;
+            L->is_ll        = 1;
+            L->xtype        = CHOLMOD_REAL;
+            L->dtype        = CHOLMOD_DOUBLE;
+            common.lnz      = h[9];
+            result[f]       = copy;
+          }
+        const unsigned int r = roots[f];
+        start_broadcast(static_cast<Index *>(L->Perm), n, r, comm, requests);
+        start_broadcast(static_cast<Index *>(L->ColCount),
+                        n,
+                        r,
+                        comm,
+                        requests);
+        start_broadcast(static_cast<Index *>(L->super),
+                        nsuper + 1,
+                        r,
+                        comm,
+                        requests);
+        start_broadcast(static_cast<Index *>(L->pi),
+                        nsuper + 1,
+                        r,
+                        comm,
+                        requests);
+        start_broadcast(static_cast<Index *>(L->px),
+                        nsuper + 1,
+                        r,
+                        comm,
+                        requests);
+        start_broadcast(static_cast<Index *>(L->s), ssize, r, comm, requests);
+        start_broadcast(static_cast<double *>(L->x), xsize, r, comm, requests);
+        start_broadcast(trailing[f].data(),
+                        trailing[f].size(),
+                        r,
+                        comm,
+                        requests);
+      }
+    ierr = MPI_Waitall(requests.size(), requests.data(), MPI_STATUSES_IGNORE);
+    AssertThrowMPI(ierr);
+    for (std::size_t f = 0; f < n_f; ++f)
+      if (rank != roots[f])
+        std::const_pointer_cast<SparseCholesky>(result[f])
+          ->trailing.assign(trailing[f].begin(), trailing[f].end());
+    return result;
   }
 
 

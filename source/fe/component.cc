@@ -159,7 +159,8 @@ namespace FuzzyContact
                        const PlaneModel                plane_model,
                        const unsigned int              n_refinements,
                        TimerOutput                    *timer,
-                       const std::vector<std::string> &contact_faces)
+                       const std::vector<std::string> &contact_faces,
+                       const bool                      assemble)
       : description_(description)
       , plane_model_(plane_model)
       , fe_(FE_Q<2>(description.fe_degree), 2)
@@ -187,14 +188,51 @@ namespace FuzzyContact
       make_mesh(n_refinements);
       setup_dofs(contact_faces);
     }
-    {
-      std::unique_ptr<TimerOutput::Scope> scope;
-      if (timer != nullptr)
-        scope = std::make_unique<TimerOutput::Scope>(*timer, "assembly");
-      assemble_zone_matrices();
-      assemble_loads();
-      form_global_matrices();
-    }
+    if (assemble)
+      {
+        std::unique_ptr<TimerOutput::Scope> scope;
+        if (timer != nullptr)
+          scope = std::make_unique<TimerOutput::Scope>(*timer, "assembly");
+        ensure_matrices();
+        ensure_loads();
+        form_global_matrices();
+      }
+  }
+
+
+  bool
+  Component::is_assembled() const
+  {
+    return assembled_;
+  }
+
+
+  void
+  Component::ensure_matrices() const
+  {
+    if (assembled_)
+      return;
+    DynamicSparsityPattern dsp(dof_handler_.n_dofs());
+    DoFTools::make_sparsity_pattern(dof_handler_,
+                                    dsp,
+                                    constraints_,
+                                    /*keep_constrained_dofs=*/false);
+    sparsity_pattern_.copy_from(dsp);
+    assemble_zone_matrices();
+    assembled_ = true;
+  }
+
+
+  void
+  Component::ensure_loads() const
+  {
+    if (loads_assembled_)
+      return;
+    // The loads of prescribed displacements come from the cell matrices.
+    if (!displacement_fields_.empty() && !displacement_loads_formed_)
+      ensure_matrices();
+    assemble_loads();
+    loads_assembled_ = true;
   }
 
 
@@ -383,18 +421,11 @@ namespace FuzzyContact
     if (!contact_faces.empty())
       pin_free_motions(contact_faces);
     constraints_.close();
-
-    DynamicSparsityPattern dsp(dof_handler_.n_dofs());
-    DoFTools::make_sparsity_pattern(dof_handler_,
-                                    dsp,
-                                    constraints_,
-                                    /*keep_constrained_dofs=*/false);
-    sparsity_pattern_.copy_from(dsp);
   }
 
 
   void
-  Component::assemble_zone_matrices()
+  Component::assemble_zone_matrices() const
   {
     const unsigned int n_zones = description_.zones.size();
     zone_stiffness_.resize(n_zones);
@@ -416,10 +447,14 @@ namespace FuzzyContact
       [this](const unsigned int                          z,
              const FullMatrix<double>                   &cell_k,
              const std::vector<types::global_dof_index> &dofs) {
-        add_displacement_loads(z, cell_k, dofs);
+        if (!displacement_loads_formed_)
+          add_displacement_loads(z, cell_k, dofs);
       });
     for (SparseMatrix<double> &M : zone_mass_)
       remove_constrained_mass(constraints_, M);
+    if (displacement_loads_formed_)
+      return; // given (set_displacement_zone_loads())
+    displacement_loads_formed_ = true;
     // On the held rows, K's diagonal times the displacement: the solution
     // there is the displacement itself.
     for (unsigned int s = 0; s < displacement_fields_.size(); ++s)
@@ -435,6 +470,7 @@ namespace FuzzyContact
   Component::assemble_directly(SparseMatrix<double> &K,
                                SparseMatrix<double> &M) const
   {
+    ensure_matrices();
     K.reinit(sparsity_pattern_);
     M.reinit(sparsity_pattern_);
     assemble_elasticity(
@@ -453,6 +489,7 @@ namespace FuzzyContact
   void
   Component::form_global_matrices() const
   {
+    ensure_matrices();
     if (stiffness_.empty())
       {
         stiffness_.reinit(sparsity_pattern_);
@@ -487,7 +524,8 @@ namespace FuzzyContact
     zone_moduli_      = moduli;
     zone_densities_   = densities;
     matrices_current_ = false;
-    if (!displacement_fields_.empty())
+    // (Loads not yet assembled are assembled at these materials.)
+    if (!displacement_fields_.empty() && loads_assembled_)
       update_displacement_loads();
   }
 
@@ -573,13 +611,14 @@ namespace FuzzyContact
   unsigned int
   Component::n_zones() const
   {
-    return zone_stiffness_.size();
+    return description_.zones.size();
   }
 
   const SparseMatrix<double> &
   Component::zone_stiffness_matrix(const unsigned int zone) const
   {
     AssertIndexRange(zone, n_zones());
+    ensure_matrices();
     return zone_stiffness_[zone];
   }
 
@@ -587,6 +626,7 @@ namespace FuzzyContact
   Component::zone_mass_matrix(const unsigned int zone) const
   {
     AssertIndexRange(zone, n_zones());
+    ensure_matrices();
     return zone_mass_[zone];
   }
 
@@ -621,6 +661,7 @@ namespace FuzzyContact
   const SparsityPattern &
   Component::sparsity_pattern() const
   {
+    ensure_matrices();
     return sparsity_pattern_;
   }
 

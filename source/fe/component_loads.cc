@@ -19,7 +19,7 @@ namespace FuzzyContact
   Component::add_displacement_loads(
     const unsigned int                          z,
     const FullMatrix<double>                   &cell_k,
-    const std::vector<types::global_dof_index> &dofs)
+    const std::vector<types::global_dof_index> &dofs) const
   {
     if (displacement_fields_.empty())
       return;
@@ -42,7 +42,7 @@ namespace FuzzyContact
 
   // The load of each support displacement at the current zone moduli.
   void
-  Component::update_displacement_loads()
+  Component::update_displacement_loads() const
   {
     unsigned int s = 0;
     load_.reinit(dof_handler_.n_dofs());
@@ -60,6 +60,35 @@ namespace FuzzyContact
       }
   }
 
+  const std::vector<std::vector<Vector<double>>> &
+  Component::displacement_zone_loads() const
+  {
+    if (!displacement_loads_formed_)
+      ensure_matrices();
+    return displacement_zone_loads_;
+  }
+
+  void
+  Component::set_displacement_zone_loads(
+    const std::vector<std::vector<Vector<double>>> &loads)
+  {
+    bool fits = loads.size() == displacement_fields_.size();
+    for (const auto &support : loads)
+      {
+        fits = fits && support.size() == n_zones();
+        for (const Vector<double> &f : support)
+          fits = fits && f.size() == n_dofs();
+      }
+    AssertThrow(fits,
+                ExcMessage("Component " + name() +
+                           ": the forces of its prescribed displacements "
+                           "given do not fit its supports, zones and DoFs."));
+    displacement_zone_loads_   = loads;
+    displacement_loads_formed_ = true;
+    if (loads_assembled_)
+      update_displacement_loads();
+  }
+
   bool
   Component::is_prescribed(const types::global_dof_index dof) const
   {
@@ -70,7 +99,7 @@ namespace FuzzyContact
   // Each load is a constant traction F d / (face length * t) on its face;
   // the unit vector holds the nodal forces for F = 1 N.
   void
-  Component::assemble_loads()
+  Component::assemble_loads() const
   {
     const QGauss<1>                      face_quadrature(fe_.degree + 1);
     FEFaceValues<2>                      fe_face_values(*mapping_,
@@ -146,12 +175,14 @@ namespace FuzzyContact
   const Vector<double> &
   Component::load_vector() const
   {
+    ensure_loads();
     return load_;
   }
 
   const Vector<double> &
   Component::unit_load_vector(const unsigned int l) const
   {
+    ensure_loads();
     AssertIndexRange(l, unit_loads_.size());
     return unit_loads_[l];
   }

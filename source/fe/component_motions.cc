@@ -286,9 +286,13 @@ namespace FuzzyContact
   {
     // The pins lie off the loaded faces and the supports' DoFs do not move
     // in a free motion, so the condensed load vector has the whole
-    // resultant along each free motion.
+    // resultant along each free motion. The forces that impose a
+    // displacement have none (R^T K = 0 and R vanishes where the support
+    // holds), and need no assembly to say so.
+    Vector<double> e(free_motions_.size());
+    if (e.size() == 0 || description_.loads[l].is_displacement)
+      return e;
     const Vector<double> f = reference_load_vector(l);
-    Vector<double>       e(free_motions_.size());
     for (unsigned int j = 0; j < free_motions_.size(); ++j)
       e[j] = free_motions_[j] * f;
     return e;

@@ -1,3 +1,4 @@
+#include <fuzzycontact/base/mpi_wait.h>
 #include <fuzzycontact/fuzzy/bound_proof.h>
 
 #include <deal.II/base/exceptions.h>
@@ -40,16 +41,25 @@ namespace FuzzyContact
     const unsigned int rank =
       parallel ? Utilities::MPI::this_mpi_process(comm) : 0;
     std::vector<std::pair<unsigned long, std::vector<double>>> mine;
-    for (unsigned long i = rank; i < points.size(); i += size)
+    // Each rank takes a contiguous block of the points (sorted): points
+    // that share their stiffness follow each other, so an exact solver
+    // that keeps its factorisation while the stiffness does not change
+    // factorises as seldom as with one process.
+    for (unsigned long i = points.size() * rank / size;
+         i < points.size() * (rank + 1) / size;
+         ++i)
       mine.emplace_back(i, exact(points[i]));
     std::vector<std::vector<double>> values(points.size());
     if (!parallel)
       for (auto &[i, v] : mine)
         values[i] = std::move(v);
     else
-      for (auto &part : Utilities::MPI::all_gather(comm, mine))
-        for (auto &[i, v] : part)
-          values[i] = std::move(v);
+      {
+        wait_for_all_ranks(comm); // (unevenly long solves: without spinning)
+        for (auto &part : Utilities::MPI::all_gather(comm, mine))
+          for (auto &[i, v] : part)
+            values[i] = std::move(v);
+      }
 
     BoundProofs        proofs;
     const unsigned int n_outputs = bounds.bounds.size();

@@ -39,6 +39,64 @@ namespace FuzzyContact
     }
 
 
+    namespace
+    {
+      bool
+      is_point(const VectorType &lower, const VectorType &upper)
+      {
+        for (unsigned int i = 0; i < lower.size(); ++i)
+          if (upper[i] > lower[i])
+            return false;
+        return true;
+      }
+
+      VectorType
+      clipped(const VectorType &x,
+              const VectorType &lower,
+              const VectorType &upper)
+      {
+        VectorType y(x.size());
+        for (unsigned int i = 0; i < x.size(); ++i)
+          y[i] = std::min(std::max(x[i], lower[i]), upper[i]);
+        return y;
+      }
+
+      // The first @p n_vertices of fixed_points() are the vertices.
+      unsigned long
+      n_vertices(const VectorType &lower)
+      {
+        const unsigned int n = lower.size();
+        return n > 0 && n < 20 ? 1ul << n : 0;
+      }
+    } // namespace
+
+
+    std::vector<VectorType>
+    fixed_points(const std::vector<VectorType> &unit_design,
+                 const VectorType              &lower,
+                 const VectorType              &upper)
+    {
+      const unsigned int      n = lower.size();
+      std::vector<VectorType> points;
+      for (unsigned long corner = 0; corner < n_vertices(lower); ++corner)
+        {
+          VectorType v(n);
+          for (unsigned int i = 0; i < n; ++i)
+            v[i] = (corner >> i) & 1 ? upper[i] : lower[i];
+          points.push_back(clipped(v, lower, upper));
+        }
+      if (!is_point(lower, upper))
+        for (const VectorType &u : unit_design)
+          {
+            VectorType x(n);
+            for (unsigned int i = 0; i < n; ++i)
+              x[i] = lower[i] + u[i] * (upper[i] - lower[i]);
+            points.push_back(clipped(x, lower, upper));
+          }
+      return points;
+    }
+
+
     std::vector<Candidate>
     global_stage(OutputObjective               &objective,
                  const std::vector<VectorType> &unit_design,
@@ -46,37 +104,25 @@ namespace FuzzyContact
                  const VectorType              &lower,
                  const VectorType              &upper)
     {
-      const unsigned int n     = lower.size();
-      bool               point = true;
-      for (unsigned int i = 0; i < n; ++i)
-        point = point && upper[i] <= lower[i];
+      const bool                               point = is_point(lower, upper);
       std::map<std::vector<double>, Candidate> unique;
       const auto add = [&](const VectorType &x, const bool vertex) {
-        VectorType y(n);
-        for (unsigned int i = 0; i < n; ++i)
-          y[i] = std::min(std::max(x[i], lower[i]), upper[i]);
+        const VectorType          y = clipped(x, lower, upper);
         const std::vector<double> key(y.begin(), y.end());
         if (unique.count(key) == 0)
           unique[key] = Candidate{y, objective.at(y), vertex || point};
       };
-      if (n > 0 && n < 20)
-        for (unsigned long corner = 0; corner < (1ul << n); ++corner)
-          {
-            VectorType v(n);
-            for (unsigned int i = 0; i < n; ++i)
-              v[i] = (corner >> i) & 1 ? upper[i] : lower[i];
-            add(v, true);
-          }
+      // The vertices, the seeds, the design (a point that is more than one
+      // of them counts as the first).
+      const std::vector<VectorType> fixed =
+        fixed_points(unit_design, lower, upper);
+      const unsigned long vertices = n_vertices(lower);
+      for (unsigned long i = 0; i < vertices; ++i)
+        add(fixed[i], true);
       for (const VectorType &s : seeds)
         add(s, false);
-      if (!point)
-        for (const VectorType &u : unit_design)
-          {
-            VectorType x(n);
-            for (unsigned int i = 0; i < n; ++i)
-              x[i] = lower[i] + u[i] * (upper[i] - lower[i]);
-            add(x, false);
-          }
+      for (unsigned long i = vertices; i < fixed.size(); ++i)
+        add(fixed[i], false);
       std::vector<Candidate> candidates;
       for (auto &entry : unique)
         candidates.push_back(std::move(entry.second));
@@ -165,8 +211,9 @@ namespace FuzzyContact
       double                         step     = initial_step;
       for (unsigned int poll = 0; step >= final_step && poll < 10000; ++poll)
         {
-          VectorType best_x     = x;
-          double     best_value = value;
+          VectorType              best_x     = x;
+          double                  best_value = value;
+          std::vector<VectorType> polls;
           for (const auto &direction : directions)
             {
               VectorType y = x;
@@ -175,8 +222,12 @@ namespace FuzzyContact
                   std::min(std::max(x[i] + sign * step * (upper[i] - lower[i]),
                                     lower[i]),
                            upper[i]);
-              if (y == x)
-                continue;
+              if (y != x)
+                polls.push_back(y);
+            }
+          objective.prefetch(polls);
+          for (const VectorType &y : polls)
+            {
               const double f = objective.at(y);
               if (f < best_value)
                 {

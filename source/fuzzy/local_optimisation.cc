@@ -114,8 +114,32 @@ namespace FuzzyContact
 
 
     void
+    OutputObjective::prefetch(const std::vector<VectorType> &xs)
+    {
+      std::vector<std::vector<double>> points;
+      for (const VectorType &x : xs)
+        points.push_back(normalisation.parameters(x));
+      cache.prefetch(points);
+    }
+
+
+    void
     OutputObjective::gradient_at(VectorType &grad, const VectorType &x0)
     {
+      // The points the loop below evaluates.
+      std::vector<VectorType> points;
+      for (unsigned int i = 0; i < x0.size(); ++i)
+        {
+          const double up   = std::min(x0[i] + step, upper[i]);
+          const double down = std::max(x0[i] - step, lower[i]);
+          for (const double end : {up, down})
+            if (up - down > 0)
+              {
+                points.push_back(x0);
+                points.back()[i] = end;
+              }
+        }
+      prefetch(points);
       VectorType xp = x0;
       for (unsigned int i = 0; i < x0.size(); ++i)
         {

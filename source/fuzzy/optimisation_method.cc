@@ -1,7 +1,8 @@
 // The optimisation method (optimisation_method.h): the chains of global
 // stages (global_stage.h) and local optimisations (local_optimisation.h),
-// the checks for a non-monotone response and the multi-start, and the
-// gathering over MPI ranks. Its settings: optimisation_settings.cc.
+// the checks for a non-monotone response and the multi-start, on an
+// evaluation cache shared by the MPI ranks. Its settings:
+// optimisation_settings.cc.
 
 #include <fuzzycontact/fuzzy/global_stage.h>
 #include <fuzzycontact/fuzzy/local_optimisation.h>
@@ -10,10 +11,6 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/vector.h>
-
-#include <boost/serialization/string.hpp>
-#include <boost/serialization/utility.hpp>
-#include <boost/serialization/vector.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -56,13 +53,6 @@ namespace FuzzyContact
       std::vector<std::vector<double>> argument; // per level, all parameters
       std::vector<BoundQuality>        quality;  // per level
       std::vector<std::string>         notes;
-
-      template <class Archive>
-      void
-      serialize(Archive &ar, const unsigned int)
-      {
-        ar &value &argument &quality &notes;
-      }
     };
 
     // One chain: the lower (or upper) bound of one output at every level,
@@ -509,29 +499,25 @@ namespace FuzzyContact
     }
 
 
-    // The chains of all ranks on every rank, in chain order, with the
-    // evaluations summed and the longest wall time over the ranks.
-    std::vector<std::pair<unsigned int, ChainResult>>
-    gather_chains(const std::vector<std::pair<unsigned int, ChainResult>> &mine,
-                  const MPI_Comm                                           comm,
-                  const bool     parallel,
-                  unsigned long &n_evaluations,
-                  double        &wall_time)
+    // The points every chain's global stage evaluates whatever its seeds
+    // (the vertices and the design of every level's box), after the
+    // nominal point @p centre.
+    std::vector<std::vector<double>>
+    fixed_points_of_all_levels(const Normalisation             &normalisation,
+                               const std::vector<FuzzyNumber>  &parameters,
+                               const std::vector<double>       &alpha,
+                               const std::vector<unsigned int> &order,
+                               const VectorType                &centre,
+                               const std::vector<VectorType>   &design)
     {
-      std::vector<std::pair<unsigned int, ChainResult>> all = mine;
-      if (parallel)
+      std::vector<std::vector<double>> points{normalisation.parameters(centre)};
+      for (const unsigned int l : order)
         {
-          all.clear();
-          for (auto &part : Utilities::MPI::all_gather(comm, mine))
-            for (auto &c : part)
-              all.push_back(std::move(c));
-          n_evaluations = Utilities::MPI::sum(n_evaluations, comm);
-          wall_time     = Utilities::MPI::max(wall_time, comm);
+          const auto [lo, hi] = normalisation.box(parameters, alpha[l]);
+          for (const VectorType &x : fixed_points(design, lo, hi))
+            points.push_back(normalisation.parameters(x));
         }
-      std::sort(all.begin(), all.end(), [](const auto &a, const auto &b) {
-        return a.first < b.first;
-      });
-      return all;
+      return points;
     }
 
 
@@ -607,28 +593,34 @@ namespace FuzzyContact
     const unsigned int n_outputs = output_names.size();
     const bool         parallel  = Utilities::MPI::job_supports_mpi() &&
                           Utilities::MPI::n_mpi_processes(comm) > 1;
-    const unsigned int n_ranks =
-      parallel ? Utilities::MPI::n_mpi_processes(comm) : 1;
-    const unsigned int rank =
-      parallel ? Utilities::MPI::this_mpi_process(comm) : 0;
 
-    EvaluationCache                 cache(response);
+    // Every rank runs every chain on one cache shared by the ranks: each
+    // distinct point is evaluated once, by one rank, as with one process.
+    // The points every chain needs (the global stage's vertices and designs
+    // of every level) are evaluated first, spread over the ranks.
+    EvaluationCache                 cache(response, comm);
     const Normalisation             normalisation(parameters);
     const std::vector<unsigned int> order = levels_from_the_core(alpha);
     const VectorType centre = centre_of_the_core(normalisation, parameters);
-    const std::vector<double> nominal = cache(normalisation.parameters(centre));
     const std::vector<VectorType> design =
       latin_hypercube(settings_.global_points,
                       normalisation.n_free(),
                       20261124);
+    cache.prefetch(fixed_points_of_all_levels(normalisation,
+                                              parameters,
+                                              alpha,
+                                              order,
+                                              centre,
+                                              design));
+    const std::vector<double> nominal = cache(normalisation.parameters(centre));
     AssertThrow(nominal.size() == n_outputs,
                 ExcMessage(
                   "The response returned " + std::to_string(nominal.size()) +
                   " outputs instead of " + std::to_string(n_outputs) + "."));
 
-    // One chain per output and direction; chains are dealt to the ranks.
-    std::vector<std::pair<unsigned int, ChainResult>> mine;
-    for (unsigned int chain = rank; chain < 2 * n_outputs; chain += n_ranks)
+    // One chain per output and direction.
+    std::vector<std::pair<unsigned int, ChainResult>> all;
+    for (unsigned int chain = 0; chain < 2 * n_outputs; ++chain)
       {
         const unsigned int k = chain / 2;
         const Chain        one(cache,
@@ -639,16 +631,16 @@ namespace FuzzyContact
                         chain % 2,
                         nominal[k],
                         output_names[k]);
-        mine.emplace_back(chain, one.run(alpha, order, centre, design));
+        all.emplace_back(chain, one.run(alpha, order, centre, design));
       }
 
-    unsigned long n_evaluations = cache.n_evaluations();
-    double        wall_time     = timer.wall_time();
-    const auto    all =
-      gather_chains(mine, comm, parallel, n_evaluations, wall_time);
     FuzzyOutputBounds result = bounds_of_chains(all, alpha, n_outputs);
-    result.n_evaluations     = n_evaluations;
-    result.wall_time         = wall_time;
+    // (Evaluations made over all ranks: each distinct point once.)
+    result.n_evaluations =
+      parallel ? Utilities::MPI::sum(cache.n_evaluated_here(), comm)
+               : cache.n_evaluated_here();
+    result.wall_time = parallel ? Utilities::MPI::max(timer.wall_time(), comm)
+                                : timer.wall_time();
     return result;
   }
 } // namespace FuzzyContact

@@ -1,3 +1,4 @@
+#include <fuzzycontact/base/mpi_wait.h>
 #include <fuzzycontact/fuzzy/sampling_method.h>
 
 #include <deal.II/base/exceptions.h>
@@ -32,8 +33,10 @@ namespace FuzzyContact
                : 0;
     }
 
-    // Evaluates the points assigned to this rank (every n-th, round robin)
-    // and gives every rank the outputs of all points.
+    // Evaluates the points assigned to this rank (a contiguous block, so
+    // that neighbouring samples, which often share their stiffness and
+    // with it the exact solver's factorisation, stay on one rank) and
+    // gives every rank the outputs of all points.
     std::vector<std::vector<double>>
     evaluate_distributed(const std::vector<std::vector<double>> &points,
                          const Response                         &response,
@@ -41,16 +44,21 @@ namespace FuzzyContact
     {
       const unsigned int size = n_ranks(comm), rank = this_rank(comm);
       std::vector<std::pair<unsigned long, std::vector<double>>> mine;
-      for (unsigned long i = rank; i < points.size(); i += size)
+      for (unsigned long i = points.size() * rank / size;
+           i < points.size() * (rank + 1) / size;
+           ++i)
         mine.emplace_back(i, response(points[i]));
       std::vector<std::vector<double>> outputs(points.size());
       if (size == 1)
         for (auto &[i, out] : mine)
           outputs[i] = std::move(out);
       else
-        for (auto &part : Utilities::MPI::all_gather(comm, mine))
-          for (auto &[i, out] : part)
-            outputs[i] = std::move(out);
+        {
+          wait_for_all_ranks(comm); // (unevenly long solves: no spinning)
+          for (auto &part : Utilities::MPI::all_gather(comm, mine))
+            for (auto &[i, out] : part)
+              outputs[i] = std::move(out);
+        }
       return outputs;
     }
 

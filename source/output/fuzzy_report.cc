@@ -180,6 +180,27 @@ namespace FuzzyContact
             r.reference.n_evaluations;
           json["speed_up"] = r.reference.wall_time / study;
         }
+      // With several ranks, who built what.
+      if (r.ranks.size() > 1)
+        out << "  MPI ranks:";
+      for (unsigned int rank = 0; rank < r.ranks.size(); ++rank)
+        {
+          const auto names = [](const std::vector<std::string> &list) {
+            std::string all;
+            for (const std::string &name : list)
+              all += (all.empty() ? "" : ", ") + name;
+            return all.empty() ? std::string("none") : all;
+          };
+          const RankWork &work = r.ranks[rank];
+          if (r.ranks.size() > 1)
+            out << (rank > 0 ? ";" : "") << " rank " << rank << " assembled "
+                << names(work.assembled) << " and factorised "
+                << names(work.factorised);
+          json["ranks"].push_back(
+            {{"assembled", work.assembled}, {"factorised", work.factorised}});
+        }
+      if (r.ranks.size() > 1)
+        out << "\n";
       report.say(out.str());
     }
   } // namespace
@@ -206,6 +227,20 @@ namespace FuzzyContact
             << std::right << p.number.to_string() << "\n";
       out << n_alpha << " alpha levels\n";
       return out.str();
+    }
+
+
+    std::string
+    extension_principle(const unsigned long n_samples,
+                        const unsigned int  points,
+                        const bool          reuse_factorisations)
+    {
+      return "Extension Principle: " + std::to_string(n_samples) +
+             " exact full-order solves (" + std::to_string(points) +
+             " points per parameter and level; " +
+             (reuse_factorisations ? "factorisations reused where exact"
+                                   : "independent analyses") +
+             ")\n";
     }
 
 

@@ -1,7 +1,11 @@
+#include <fuzzycontact/base/mpi_wait.h>
 #include <fuzzycontact/reduction/reduced_model.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/lac/lapack_templates.h>
+
+#include <boost/serialization/vector.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -209,22 +213,34 @@ namespace FuzzyContact
         compute_blocks(variable[c]);
         load_forces.push_back(variable[c].matrices.reference_forces);
       }
-    // The free motions of the bodies held by contact alone, every
-    // component's after the previous one's.
-    unsigned int n_motions = 0;
+    collect_free_motions();
+    flexibility_         = std::make_shared<Flexibility>(*this);
+    problem_.flexibility = flexibility_;
+    flexibility_changed();
+  }
+
+
+  void
+  ReducedContactModel::collect_free_motions()
+  {
+    // Every component's motions after the previous one's.
+    const unsigned int m         = problem_.g_initial.size();
+    unsigned int       n_motions = 0;
+    first_motion.clear();
     for (const Part &part : variable)
       {
         first_motion.push_back(n_motions);
         n_motions += part.matrices.rigid_gaps.n();
       }
     problem_.rigid.gaps.reinit(m, n_motions);
+    problem_.rigid.names.clear();
     for (unsigned int c = 0; c < variable.size(); ++c)
       {
         const ReducedComponentMatrices &r = variable[c].matrices;
         AssertThrow(r.rigid_gaps.n() == 0 ||
                       (r.rigid_gaps.m() == m &&
                        r.motion_names.size() == r.rigid_gaps.n() &&
-                       r.rigid_loads.size() == r.loads.size() &&
+                       r.rigid_loads.size() == r.reference_forces.size() &&
                        r.rigid_observation.m() == r.observed_dofs.size()),
                     ExcMessage("ReducedContactModel: the free motions of a "
                                "component do not fit its matrices."));
@@ -236,6 +252,42 @@ namespace FuzzyContact
           }
       }
     problem_.rigid_load.reinit(n_motions);
+  }
+
+
+  ReducedContactModel::ReducedContactModel(
+    std::vector<ReducedComponentMatrices> components,
+    const Vector<double>                 &g_initial,
+    const std::vector<double>            &mu,
+    const std::vector<unsigned int>      &owner,
+    const MPI_Comm                        comm)
+      : variable(components.size())
+      , fixed(components.size())
+      , scales(components.size(), 1.)
+  {
+    AssertThrow(mu.size() * 2 == g_initial.size(),
+                ExcMessage("ReducedContactModel: 2 gap rows per friction "
+                           "coefficient are expected."));
+    AssertDimension(owner.size(), components.size());
+    problem_.g_initial = g_initial;
+    problem_.mu        = mu;
+    // Every rank forms its components' blocks, then they are exchanged.
+    const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+    for (unsigned int c = 0; c < components.size(); ++c)
+      if (rank == owner[c])
+        {
+          variable[c].matrices = std::move(components[c]);
+          compute_blocks(variable[c]);
+        }
+    wait_for_all_ranks(comm);
+    for (unsigned int c = 0; c < components.size(); ++c)
+      {
+        Part received = Utilities::MPI::broadcast(comm, variable[c], owner[c]);
+        if (rank != owner[c])
+          variable[c] = std::move(received);
+        load_forces.push_back(variable[c].matrices.reference_forces);
+      }
+    collect_free_motions();
     flexibility_         = std::make_shared<Flexibility>(*this);
     problem_.flexibility = flexibility_;
     flexibility_changed();
@@ -351,7 +403,8 @@ namespace FuzzyContact
         part.load_gaps.push_back(std::move(g));
         part.observation_loads.push_back(std::move(u));
       }
-    part.present = true;
+    part.present      = true;
+    part.has_matrices = true;
   }
 
 
@@ -525,6 +578,11 @@ namespace FuzzyContact
     std::vector<Vector<double>> q;
     for (unsigned int c = 0; c < variable.size(); ++c)
       {
+        if (!variable[c].has_matrices)
+          {
+            q.emplace_back(); // formed on another rank
+            continue;
+          }
         std::vector<Vector<double>> parts;
         for (const Part *part : {&variable[c], &fixed[c]})
           if (part->present)

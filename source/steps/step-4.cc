@@ -30,9 +30,9 @@
 // scene (a SceneState), so the reference solves exactly the problem the
 // fast path approximates.
 //
-// The samples of the vertex method and of the Extension Principle, and the
-// optimisation chains, are spread over MPI ranks: `mpirun -np 2 step-4 ...`
-// gives the same bounds.
+// With MPI (`mpirun -np 2 step-4 ...`) the components are built on
+// different ranks and the evaluations spread over them: the same bounds,
+// from as many evaluations as one process makes.
 //
 // Usage: step-4 prm/step-4.prm
 
@@ -40,19 +40,17 @@
 #include <fuzzycontact/base/parameter_file.h>
 #include <fuzzycontact/base/program.h>
 #include <fuzzycontact/base/progress.h>
+#include <fuzzycontact/base/rank_timers.h>
 #include <fuzzycontact/fuzzy/bound_proof.h>
 #include <fuzzycontact/fuzzy/extension_principle.h>
-#include <fuzzycontact/fuzzy/fuzzy_number.h>
 #include <fuzzycontact/fuzzy/fuzzy_parameters.h>
 #include <fuzzycontact/fuzzy/optimisation_method.h>
 #include <fuzzycontact/fuzzy/vertex_method.h>
 #include <fuzzycontact/output/fuzzy_report.h>
 #include <fuzzycontact/output/output_files.h>
-#include <fuzzycontact/output/report.h>
 #include <fuzzycontact/scene/scene.h>
 #include <fuzzycontact/study/fuzzy_contact_model.h>
 #include <fuzzycontact/study/input_checks.h>
-#include <fuzzycontact/study/observations.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
@@ -210,14 +208,8 @@ namespace Step4
                           " alpha levels: the exact solves (about number of "
                           "alpha levels x points per dimension ^ parameters)",
                         "lower one of these keys");
-      bool all_crisp = true;
-      for (const FuzzyParameter &p : fuzzy.parameters())
-        all_crisp = all_crisp && p.number.points()[0] == p.number.points()[3];
-      if (all_crisp)
-        warnings.push_back("warning: every fuzzy parameter is crisp (its "
-                           "support has no width): the outputs cannot "
-                           "change, and every membership function is a "
-                           "single value.");
+      if (!InputChecks::all_crisp_warning(fuzzy).empty())
+        warnings.push_back(InputChecks::all_crisp_warning(fuzzy));
     }
   };
 
@@ -287,7 +279,7 @@ namespace Step4
   // Everything that does not depend on the fuzzy parameters is built once:
   // meshes, matrices, modes, static correction modes, the contact interface,
   // the outputs' nodes and the reduced contact flexibility. On several ranks
-  // each builds its own copy.
+  // each component is assembled and reduced on one (FuzzyContactModel).
   void
   FuzzyStudy::build_model()
   {
@@ -324,6 +316,7 @@ namespace Step4
   {
     // Parameters that cannot change the answer are crisp here.
     const std::vector<FuzzyNumber> numbers = model->effective_numbers();
+    const std::vector<double>     &alpha   = results.alpha;
     results.inert                          = model->inert();
     const std::vector<std::string> names   = model->observations().names();
     const Response                 reduced = [&](const std::vector<double> &p) {
@@ -337,22 +330,29 @@ namespace Step4
         progress->advance();
       return values;
     };
-    // Every method through the IntervalMethod interface, timed.
+    // Every method through the IntervalMethod interface, timed; on the
+    // reduced model, by the ranks that can solve it.
     const auto bounds = [&](const IntervalMethod &method,
                             const Response       &response,
                             const std::string    &section) {
       TimerOutput::Scope scope(timer, section);
-      return method.bounds(numbers, results.alpha, response, names, comm);
+      const MPI_Comm     by =
+        &response == &reduced ? model->reduced_communicator() : comm;
+      return bounds_on_ranks(method, numbers, alpha, response, names, comm, by);
     };
 
     results.optimisation = bounds(OptimisationMethod(parameters.optimisation),
                                   reduced,
                                   "optimisation (reduced model)");
     {
-      // Every bound's proof: its argument once more, exactly.
+      // Every bound's proof: its argument once more, exactly, on the
+      // factorisations of the offline build (shared by the ranks, in the
+      // proofs' time).
+      const double       shared = model->share_factorisations(&timer);
       TimerOutput::Scope scope(timer, "proofs (full order at the bounds)");
       model->set_reuse_factorisations(true);
-      results.proofs     = prove_bounds(results.optimisation, exact, comm);
+      results.proofs = prove_bounds(results.optimisation, exact, comm);
+      results.proofs.wall_time += shared;
       results.has_proofs = true;
     }
     if (parameters.vertex_method)
@@ -368,14 +368,10 @@ namespace Step4
           extension_principle_size(numbers,
                                    results.alpha,
                                    parameters.points_per_dimension);
-        report.say("Extension Principle: " + std::to_string(n_samples) +
-                   " exact full-order solves (" +
-                   std::to_string(parameters.points_per_dimension) +
-                   " points per parameter and level; " +
-                   (parameters.reuse_factorisations
-                      ? "factorisations reused where exact"
-                      : "independent analyses") +
-                   ")\n");
+        report.say(FuzzyStudyReport::extension_principle(
+          n_samples,
+          parameters.points_per_dimension,
+          parameters.reuse_factorisations));
         const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
         progress                   = std::make_unique<Progress>(
           "Extension Principle, full-order solves" +
@@ -399,6 +395,7 @@ namespace Step4
   void
   FuzzyStudy::write_output()
   {
+    results.ranks = model->work_per_rank();
     nlohmann::json json;
     FuzzyStudyReport::bounds(results, report, json);
     json["contact_solver"] = model->contact_solver();
@@ -423,6 +420,7 @@ namespace Step4
     compute_bounds();
     write_output();
     timer.print_summary();
+    pcout << sections_per_rank(timer, comm); // with several ranks
   }
 } // namespace Step4
 

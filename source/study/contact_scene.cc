@@ -3,17 +3,23 @@
 #include <fuzzycontact/study/contact_scene.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
+
+#include <boost/serialization/vector.hpp>
 
 #include <algorithm>
 
 namespace FuzzyContact
 {
-  ContactScene::ContactScene(const Scene       &scene,
-                             const unsigned int mesh_refinements,
-                             const double       penetration_tolerance,
-                             TimerOutput       *timer)
+  ContactScene::ContactScene(const Scene             &scene,
+                             const unsigned int       mesh_refinements,
+                             const double             penetration_tolerance,
+                             TimerOutput             *timer,
+                             const std::vector<bool> &assemble)
       : scene_(scene)
   {
+    Assert(assemble.empty() || assemble.size() == scene_.components.size(),
+           ExcDimensionMismatch(assemble.size(), scene_.components.size()));
     for (const ComponentDescription &d : scene_.components)
       {
         // A body its supports leave free is held by contact alone: it is
@@ -27,11 +33,14 @@ namespace FuzzyContact
             if (pair.master_component == d.name)
               contact_faces.push_back(pair.master_face);
           }
-        owned.push_back(std::make_unique<Component>(d,
-                                                    scene_.plane_model,
-                                                    mesh_refinements,
-                                                    timer,
-                                                    contact_faces));
+        const unsigned int c = owned.size();
+        owned.push_back(
+          std::make_unique<Component>(d,
+                                      scene_.plane_model,
+                                      mesh_refinements,
+                                      timer,
+                                      contact_faces,
+                                      assemble.empty() || assemble[c]));
         components_.push_back(owned.back().get());
         const std::string free = owned.back()->free_rigid_motion();
         AssertThrow(free.empty() || !contact_faces.empty(),
@@ -49,6 +58,7 @@ namespace FuzzyContact
                                                     components_,
                                                     penetration_tolerance);
     factorisations.resize(owned.size());
+    n_factorised.assign(owned.size(), 0);
   }
 
 
@@ -150,10 +160,73 @@ namespace FuzzyContact
                                  "Component " + owned[c]->name() +
                                    ": the stiffness matrix");
         factorisations[c] = std::move(factorisation);
+        ++n_factorised[c];
         ProgressLines::stage("stiffness of " + owned[c]->name() + " factorised",
                              c + 1,
                              owned.size());
       }
     return factorisations[c];
+  }
+
+
+  bool
+  ContactScene::has_stiffness_factorisation(const unsigned int c) const
+  {
+    AssertIndexRange(c, owned.size());
+    return factorisations[c] != nullptr;
+  }
+
+
+  void
+  ContactScene::set_stiffness_factorisation(
+    const unsigned int                    c,
+    std::shared_ptr<const SparseCholesky> factorisation)
+  {
+    AssertIndexRange(c, owned.size());
+    AssertThrow(factorisation != nullptr &&
+                  factorisation->n() == owned[c]->n_dofs(),
+                ExcMessage("ContactScene: the factorisation given for "
+                           "component " +
+                           owned[c]->name() + " is not one of its stiffness."));
+    factorisations[c] = std::move(factorisation);
+  }
+
+
+  void
+  ContactScene::share_stiffness_factorisations(
+    const std::vector<unsigned int> &owner,
+    const MPI_Comm                   comm,
+    TimerOutput                     *timer)
+  {
+    AssertDimension(owner.size(), owned.size());
+    set_materials(SceneState(scene_));
+    const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+    std::vector<std::shared_ptr<const SparseCholesky>> mine(owned.size());
+    for (unsigned int c = 0; c < owned.size(); ++c)
+      if (rank == owner[c])
+        mine[c] = stiffness_factorisation(c, timer);
+    const auto scope = timer_section(timer, "factorisations shared (MPI)");
+    factorisations   = SparseCholesky::broadcast(mine, owner, comm);
+    // The loads of prescribed displacements come from the stiffness too.
+    for (unsigned int c = 0; c < owned.size(); ++c)
+      for (const EdgeLoad &load : owned[c]->description().loads)
+        if (load.is_displacement)
+          {
+            std::vector<std::vector<Vector<double>>> forces;
+            if (rank == owner[c])
+              forces = owned[c]->displacement_zone_loads();
+            forces = Utilities::MPI::broadcast(comm, forces, owner[c]);
+            if (rank != owner[c])
+              owned[c]->set_displacement_zone_loads(forces);
+            break;
+          }
+  }
+
+
+  unsigned int
+  ContactScene::n_factorisations(const unsigned int c) const
+  {
+    AssertIndexRange(c, owned.size());
+    return n_factorised[c];
   }
 } // namespace FuzzyContact

@@ -2,6 +2,10 @@
 #include <fuzzycontact/study/fuzzy_contact_model.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
+
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/vector.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -90,16 +94,12 @@ namespace FuzzyContact
     const MPI_Comm                   comm)
       : scene(scene_)
       , fuzzy(fuzzy)
+      , comm(comm)
   {
     AssertThrow(!scene.contact_pairs.empty(),
                 ExcMessage("The fuzzy contact study needs a scene with a "
                            "contact pair."));
     Observations::check(output_names, scene);
-    bodies  = std::make_unique<ContactScene>(scene,
-                                            settings.mesh_refinements,
-                                            1e-8,
-                                            timer);
-    outputs = std::make_unique<Observations>(output_names, *bodies);
 
     // A parameter that cannot change the static answer is not varied.
     std::vector<VaryingQuantity> varying;
@@ -113,6 +113,25 @@ namespace FuzzyContact
         if (inert_parameters.back().empty())
           varying.push_back({p.quantity, p.number.alpha_cut(0)});
       }
+
+    // Spread over the ranks, each assembles only the components it builds.
+    builder =
+      ReducedOrderModel::builders(scene.components.size(), varying, comm);
+    std::vector<bool> assemble;
+    if (Utilities::MPI::job_supports_mpi() &&
+        Utilities::MPI::n_mpi_processes(comm) > 1)
+      {
+        n_ranks_building = Utilities::MPI::n_mpi_processes(comm);
+        for (unsigned int c = 0; c < scene.components.size(); ++c)
+          assemble.push_back(builder[c] ==
+                             Utilities::MPI::this_mpi_process(comm));
+      }
+    bodies        = std::make_unique<ContactScene>(scene,
+                                            settings.mesh_refinements,
+                                            1e-8,
+                                            timer,
+                                            assemble);
+    outputs       = std::make_unique<Observations>(output_names, *bodies);
     reduced_model = std::make_unique<ReducedOrderModel>(
       *bodies,
       modes_for(varying, settings, timer, comm),
@@ -121,8 +140,6 @@ namespace FuzzyContact
       settings.reduced,
       timer,
       comm);
-    if (ReducedOrderModel::spreads_components(varying, comm))
-      n_ranks_building = Utilities::MPI::n_mpi_processes(comm);
     std::unique_ptr<ContactSolver> solver =
       create_contact_solver(settings.contact_solver,
                             settings.exact,
@@ -132,6 +149,35 @@ namespace FuzzyContact
                                       solver_name == "fl2c" ? "FL2C"
                                                             : solver_name);
     full_model = std::make_unique<FullOrderModel>(*bodies, outputs->dofs());
+
+    // The ranks that can solve the reduced model (all but where some
+    // components are re-analysed: the first rank).
+    reduced_ranks = comm;
+    if (n_ranks_building > 1 &&
+        Utilities::MPI::min(reduced_model->solves_here() ? 1 : 0, comm) == 0)
+      {
+        const int ierr =
+          MPI_Comm_split(comm,
+                         reduced_model->solves_here() ? 0 : MPI_UNDEFINED,
+                         Utilities::MPI::this_mpi_process(comm),
+                         &reduced_ranks);
+        AssertThrowMPI(ierr);
+        own_reduced_ranks = true;
+      }
+  }
+
+
+  FuzzyContactModel::~FuzzyContactModel()
+  {
+    if (own_reduced_ranks && reduced_ranks != MPI_COMM_NULL)
+      MPI_Comm_free(&reduced_ranks);
+  }
+
+
+  MPI_Comm
+  FuzzyContactModel::reduced_communicator() const
+  {
+    return reduced_ranks;
   }
 
 
@@ -163,10 +209,10 @@ namespace FuzzyContact
         // Where the components are spread over the ranks, each computes the
         // modes of its own components only.
         std::vector<bool> owned = needed;
-        if (ReducedOrderModel::spreads_components(varying, comm))
+        if (n_ranks_building > 1)
           for (unsigned int c = 0; c < n_c; ++c)
-            owned[c] = owned[c] && c % Utilities::MPI::n_mpi_processes(comm) ==
-                                     Utilities::MPI::this_mpi_process(comm);
+            owned[c] =
+              owned[c] && builder[c] == Utilities::MPI::this_mpi_process(comm);
         std::string without;
         for (unsigned int c = 0; c < n_c; ++c)
           if (!needed[c])
@@ -325,6 +371,34 @@ namespace FuzzyContact
   }
 
 
+  double
+  FuzzyContactModel::share_factorisations(TimerOutput *timer)
+  {
+    if (n_ranks_building <= 1)
+      return 0;
+    Timer wall;
+    bodies->share_stiffness_factorisations(builder, comm, timer);
+    return Utilities::MPI::max(wall.wall_time(), comm);
+  }
+
+
+  std::vector<RankWork>
+  FuzzyContactModel::work_per_rank() const
+  {
+    RankWork mine;
+    for (unsigned int c = 0; c < bodies->n_components(); ++c)
+      {
+        if (bodies->component(c).is_assembled())
+          mine.assembled.push_back(bodies->component(c).name());
+        if (bodies->n_factorisations(c) > 0)
+          mine.factorised.push_back(bodies->component(c).name());
+      }
+    if (!Utilities::MPI::job_supports_mpi())
+      return {mine};
+    return Utilities::MPI::all_gather(comm, mine);
+  }
+
+
   std::vector<unsigned int>
   FuzzyContactModel::n_dofs() const
   {
@@ -347,9 +421,17 @@ namespace FuzzyContact
     if (!skipped_stages.empty())
       out << "  " << skipped_stages << "\n";
     if (n_ranks_building > 1)
-      out << "  the components' reduced models were built on "
-          << n_ranks_building << " MPI ranks (component c on rank c mod "
-          << n_ranks_building << "), their reduced blocks exchanged\n";
+      {
+        out << "  the components' reduced models were built on "
+            << n_ranks_building << " MPI ranks (";
+        for (unsigned int c = 0; c < builder.size(); ++c)
+          out << (c > 0 ? ", " : "") << bodies->component(c).name()
+              << " on rank " << builder[c];
+        out << "), their reduced blocks exchanged\n";
+        if (reduced_ranks != comm)
+          out << "  the reduced model is solved on the first rank only: it "
+                 "holds the reanalyses of the re-analysed components\n";
+      }
     out << "  contact: " << bodies->interface().n_nodes() << " slave nodes in "
         << bodies->interface().n_pairs() << " contact pair(s), solved by "
         << (solver_name == "fl2c" ? "FL2C (fuzzy regulators"

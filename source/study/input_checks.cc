@@ -160,6 +160,18 @@ namespace FuzzyContact
     } // namespace
 
 
+    std::string
+    all_crisp_warning(const FuzzyParameterSet &fuzzy)
+    {
+      for (const FuzzyParameter &p : fuzzy.parameters())
+        if (p.number.points()[0] != p.number.points()[3])
+          return "";
+      return "warning: every fuzzy parameter is crisp (its support has no "
+             "width): the outputs cannot change, and every membership "
+             "function is a single value.";
+    }
+
+
     void
     check(const FuzzyParameterSet &fuzzy,
           const Scene             &scene,

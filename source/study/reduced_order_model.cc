@@ -80,8 +80,9 @@ namespace FuzzyContact
     std::vector<double>        nominal_moduli, nominal_densities;
 
     ModalBasis modes;
-    // The basis (on the rank that built it: every rank unless the
-    // components are spread over the ranks) and its sizes (on every rank).
+    // The basis and its reduced matrices (on the rank that built it: every
+    // rank unless the components are spread over the ranks) and its sizes
+    // (on every rank).
     std::unique_ptr<ReducedComponent> reduced;
     unsigned int                      n_modes = 0, n_corrections = 0;
     ReducedComponentMatrices          nominal_matrices;
@@ -91,6 +92,8 @@ namespace FuzzyContact
     // HPTP: the reanalysis and the projections that turn Y(p) into the
     // component's reduced matrices.
     std::unique_ptr<ParameterIndependentReanalysis> reanalysis;
+    // (on the rank that built it) and its order and basis size (on all)
+    unsigned int reanalysis_order = 0, reanalysis_vectors = 0;
     std::vector<FullMatrix<double>> T_K_psi;    // T^T K_z Psi per zone
     std::vector<FullMatrix<double>> psi_K_psi;  // Psi^T K_z Psi per zone
     FullMatrix<double>              C_T, C_psi; // C T, C Psi
@@ -144,23 +147,17 @@ namespace FuzzyContact
         models.push_back(std::move(m));
       }
 
-    // With several ranks, component c is built on rank c mod n and its
-    // reduced blocks are sent to all (unless a component is re-analysed).
-    const bool         spread = spreads_components(varying, comm);
-    const unsigned int n_ranks =
-      spread ? Utilities::MPI::n_mpi_processes(comm) : 1;
+    // With several ranks, each component is built on one (builders()),
+    // with its reanalysis, and its blocks of the reduced contact problem
+    // are formed there and sent to all.
+    const std::vector<unsigned int> owner = builders(n_c, varying, comm);
+    const bool spread = Utilities::MPI::job_supports_mpi() &&
+                        Utilities::MPI::n_mpi_processes(comm) > 1;
     const unsigned int rank =
       spread ? Utilities::MPI::this_mpi_process(comm) : 0;
     for (unsigned int c = 0; c < n_c; ++c)
-      if (!spread || c % n_ranks == rank)
+      if (owner[c] == rank)
         build_component(*models[c], c, observed[c], timer);
-    if (spread)
-      {
-        auto scope = timer_section(timer, "reduced blocks exchanged (MPI)");
-        for (unsigned int c = 0; c < n_c; ++c)
-          exchange_component(*models[c], c % n_ranks, comm);
-      }
-
     std::vector<ReducedComponentMatrices> nominal;
     for (unsigned int c = 0; c < n_c; ++c)
       {
@@ -177,15 +174,29 @@ namespace FuzzyContact
           m.n_corrections > 0;
         nominal.push_back(m.split ? columns(m.nominal_matrices, 0, m.n_modes)
                                   : m.nominal_matrices);
-        if (m.hptp)
+        if (m.hptp && owner[c] == rank)
           build_reanalysis(m, c, varying, timer);
       }
 
+    // (With several ranks, each forms its components' blocks, and then
+    // they are exchanged: this section includes the wait for the others.)
     auto scope = timer_section(timer, "reduced contact flexibility");
-    reduced =
-      std::make_unique<ReducedContactModel>(std::move(nominal),
-                                            interface.initial_gaps(),
-                                            interface.friction_coefficients());
+    if (spread)
+      {
+        reduced = std::make_unique<ReducedContactModel>(
+          std::move(nominal),
+          interface.initial_gaps(),
+          interface.friction_coefficients(),
+          owner,
+          comm);
+        for (unsigned int c = 0; c < n_c; ++c)
+          exchange_component(*models[c], owner[c], comm);
+      }
+    else
+      reduced = std::make_unique<ReducedContactModel>(
+        std::move(nominal),
+        interface.initial_gaps(),
+        interface.friction_coefficients());
     reduced->set_load_stages(bodies.scene().load_stages);
     for (unsigned int c = 0; c < n_c; ++c)
       if (models[c]->split)
@@ -196,17 +207,37 @@ namespace FuzzyContact
   }
 
 
-  bool
-  ReducedOrderModel::spreads_components(
-    const std::vector<VaryingQuantity> &varying,
-    const MPI_Comm                      comm)
+  std::vector<unsigned int>
+  ReducedOrderModel::builders(const unsigned int                  n_components,
+                              const std::vector<VaryingQuantity> &varying,
+                              const MPI_Comm                      comm)
   {
     // (MPI_COMM_SELF, or a program that did not initialise MPI)
-    if (!Utilities::MPI::job_supports_mpi() ||
-        Utilities::MPI::n_mpi_processes(comm) == 1)
-      return false;
+    const unsigned int n_ranks = Utilities::MPI::job_supports_mpi()
+                                   ? Utilities::MPI::n_mpi_processes(comm)
+                                   : 1;
+    std::vector<bool>  reanalysed(n_components, false);
     for (const VaryingQuantity &v : varying)
       if (v.quantity.is_material() && v.quantity.zone >= 0)
+        reanalysed[v.quantity.component] = true;
+    const bool any =
+      std::find(reanalysed.begin(), reanalysed.end(), true) != reanalysed.end();
+    std::vector<unsigned int> owner(n_components, 0);
+    unsigned int              next = 0;
+    for (unsigned int c = 0; c < n_components && n_ranks > 1; ++c)
+      if (!any)
+        owner[c] = c % n_ranks;
+      else if (!reanalysed[c])
+        owner[c] = 1 + next++ % (n_ranks - 1);
+    return owner;
+  }
+
+
+  bool
+  ReducedOrderModel::solves_here() const
+  {
+    for (const auto &m : models)
+      if (m->hptp && m->reanalysis == nullptr)
         return false;
     return true;
   }
@@ -246,23 +277,26 @@ namespace FuzzyContact
   }
 
 
-  // Sends what the other ranks need of a component built on rank @p owner:
-  // its reduced matrices, the sizes of its basis and its eigenvalues (for
-  // the description).
+  // Sends what the other ranks need of a component built on rank @p owner
+  // besides its blocks of the reduced contact problem (ReducedContactModel
+  // sends those): the sizes of its basis and of its reanalysis, and its
+  // eigenvalues (for the description).
   void
   ReducedOrderModel::exchange_component(ComponentModel    &m,
                                         const unsigned int owner,
                                         const MPI_Comm     comm)
   {
-    m.nominal_matrices =
-      Utilities::MPI::broadcast(comm, m.nominal_matrices, owner);
     const std::vector<unsigned int> sizes =
       Utilities::MPI::broadcast(comm,
                                 std::vector<unsigned int>{m.n_modes,
-                                                          m.n_corrections},
+                                                          m.n_corrections,
+                                                          m.reanalysis_order,
+                                                          m.reanalysis_vectors},
                                 owner);
-    m.n_modes       = sizes[0];
-    m.n_corrections = sizes[1];
+    m.n_modes            = sizes[0];
+    m.n_corrections      = sizes[1];
+    m.reanalysis_order   = sizes[2];
+    m.reanalysis_vectors = sizes[3];
     m.modes.eigenvalues =
       Utilities::MPI::broadcast(comm, m.modes.eigenvalues, owner);
   }
@@ -330,6 +364,8 @@ namespace FuzzyContact
     const unsigned int first = std::min(rs.max_order, 2u);
     if (build(first) == first && first < rs.max_order)
       build(rs.max_order);
+    m.reanalysis_order   = m.reanalysis->order();
+    m.reanalysis_vectors = m.reanalysis->basis_size(m.reanalysis_order);
 
     auto                scope = timer_section(timer, "reanalysis projections");
     const ReducedBasis &T     = m.reanalysis->basis();
@@ -502,6 +538,11 @@ namespace FuzzyContact
   void
   ReducedOrderModel::set_state(const SceneState &state)
   {
+    AssertThrow(solves_here(),
+                ExcMessage("ReducedOrderModel: this MPI rank does not hold "
+                           "the reanalysis of every re-analysed component "
+                           "(they were built on the first rank); it cannot "
+                           "solve."));
     const ContactInterface &interface = bodies.interface();
     AssertThrow(state.zone_moduli.size() == models.size(),
                 ExcMessage("ReducedOrderModel: the state is not one of this "
@@ -611,7 +652,7 @@ namespace FuzzyContact
   {
     std::vector<unsigned int> n;
     for (const auto &m : models)
-      n.push_back(m->reanalysis ? m->reanalysis->order() : 0);
+      n.push_back(m->hptp ? m->reanalysis_order : 0);
     return n;
   }
 
@@ -641,18 +682,24 @@ namespace FuzzyContact
               out << " " << q.name;
             if (m.hptp)
               {
-                const auto &cost = m.reanalysis->derivative_cost();
                 out << ": parameter-independent HPTP, order "
-                    << m.reanalysis->order() << " ("
-                    << m.reanalysis->basis_size(m.reanalysis->order())
-                    << " basis vectors; Lee's derivatives: ";
-                if (cost.method == DerivativeSolver::deflated_cg)
-                  out << cost.systems << " systems by deflated CG, "
-                      << cost.cg_iterations << " steps";
-                if (cost.factorisations > 0)
-                  out << (cost.method == DerivativeSolver::deflated_cg ? ", "
-                                                                       : "")
-                      << cost.factorisations << " bordered matrices factorised";
+                    << m.reanalysis_order << " (" << m.reanalysis_vectors
+                    << " basis vectors";
+                // (On the rank that built it: how Lee's systems were solved.)
+                if (m.reanalysis != nullptr)
+                  {
+                    const auto &cost = m.reanalysis->derivative_cost();
+                    out << "; Lee's derivatives: ";
+                    if (cost.method == DerivativeSolver::deflated_cg)
+                      out << cost.systems << " systems by deflated CG, "
+                          << cost.cg_iterations << " steps";
+                    if (cost.factorisations > 0)
+                      out << (cost.method == DerivativeSolver::deflated_cg
+                                ? ", "
+                                : "")
+                          << cost.factorisations
+                          << " bordered matrices factorised";
+                  }
                 out << ")";
               }
             else

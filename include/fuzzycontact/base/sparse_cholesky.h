@@ -20,6 +20,7 @@
 #ifndef fuzzycontact_base_sparse_cholesky_h
 #define fuzzycontact_base_sparse_cholesky_h
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/types.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
@@ -105,6 +106,20 @@ namespace FuzzyContact
      */
     static unsigned long
     n_shared_analyses();
+
+    /**
+     * Factorisation f of @p factorisations, made on rank @p roots[f] of
+     * @p comm, on every rank: the root's object, a copy of its factor on
+     * the others (the same numbers, bit for bit, so that their solves give
+     * the same results as the root's). The entries of @p factorisations
+     * are read on their roots only. All factors travel at once (a rank
+     * sends its own while it receives the others'). Collective.
+     */
+    static std::vector<std::shared_ptr<const SparseCholesky>>
+    broadcast(
+      const std::vector<std::shared_ptr<const SparseCholesky>> &factorisations,
+      const std::vector<unsigned int>                          &roots,
+      const MPI_Comm                                            comm);
 
     /** Entries of L, and the bytes CHOLMOD holds for the factorisation. */
     double

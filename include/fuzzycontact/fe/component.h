@@ -34,6 +34,13 @@
 // R are independent), and the body's displacement is u + R a. The
 // amplitudes a are unknowns of the contact problem, with the equilibrium
 // R^T (f + C^T p) = 0 as their equations (contact/contact_problem.h).
+//
+// The matrices and loads are assembled when the component is built, or, if
+// it is built without (a rank of an MPI study that does not build this
+// body's reduced model needs only its mesh and DoFs, for the contact
+// interface and the outputs), when they are first asked for: the loads
+// (face integrals) on their own, the matrices with everything that needs
+// them (the loads of prescribed displacements among them).
 
 #ifndef fuzzycontact_fe_component_h
 #define fuzzycontact_fe_component_h
@@ -77,7 +84,9 @@ namespace FuzzyContact
      * @p n_refinements times), the DoFs and the clamp constraints, and
      * assembles all matrices and the load vector. Throws if the zones do
      * not tile the mesh. If @p timer is given, the stages "mesh and DoFs"
-     * and "assembly" are timed in it.
+     * and "assembly" are timed in it. With @p assemble = false, only the
+     * mesh, the DoFs and the constraints are built; the matrices and loads
+     * are assembled on first use (see the top of this file).
      */
     Component(const ComponentDescription &description,
               const PlaneModel            plane_model,
@@ -86,14 +95,23 @@ namespace FuzzyContact
     /**
      * As above, for a contact problem: @p contact_faces are the component's
      * faces in contact pairs. A body its supports do not hold is then
-     * pinned (see the top of this file), with its pins off those faces;
-     * otherwise this is the constructor above.
+     * pinned (see the top of this file), with its pins off those faces.
+     * With @p assemble = false the matrices and loads are assembled on
+     * first use (see the top of this file).
      */
     Component(const ComponentDescription     &description,
               const PlaneModel                plane_model,
               const unsigned int              n_refinements,
               TimerOutput                    *timer,
-              const std::vector<std::string> &contact_faces);
+              const std::vector<std::string> &contact_faces,
+              const bool                      assemble = true);
+
+    /**
+     * Whether the matrices have been assembled (at construction or on
+     * first use).
+     */
+    bool
+    is_assembled() const;
 
     const std::string &
     name() const;
@@ -164,6 +182,24 @@ namespace FuzzyContact
      */
     const Vector<double> &
     load_vector() const;
+    /**
+     * Per support with a prescribed displacement, per zone: the nodal
+     * forces -K_z,fp u_p and K_z,pp u_p at unit modulus along the unit
+     * displacement (see the top of this file), from which the loads of
+     * prescribed displacements are formed. They come from the cell
+     * matrices (assembled for them if not yet).
+     */
+    const std::vector<std::vector<Vector<double>>> &
+    displacement_zone_loads() const;
+    /**
+     * Gives this component the forces of displacement_zone_loads() made
+     * elsewhere (by the MPI rank that assembled the component), so that
+     * its loads need no assembly here.
+     */
+    void
+    set_displacement_zone_loads(
+      const std::vector<std::vector<Vector<double>>> &loads);
+
     /** Nodal forces of load @p l for a total force of 1 N. */
     const Vector<double> &
     unit_load_vector(const unsigned int l) const;
@@ -264,18 +300,26 @@ namespace FuzzyContact
     void
     make_mesh_from_file();
     void
-    add_displacement_loads(const unsigned int                          z,
-                           const FullMatrix<double>                   &cell_k,
-                           const std::vector<types::global_dof_index> &dofs);
+    add_displacement_loads(
+      const unsigned int                          z,
+      const FullMatrix<double>                   &cell_k,
+      const std::vector<types::global_dof_index> &dofs) const;
     void
-    update_displacement_loads();
+    update_displacement_loads() const;
     /** DoFs, supports, and pins if @p contact_faces are given. */
     void
     setup_dofs(const std::vector<std::string> &contact_faces);
+    // The sparsity pattern and the zone matrices, if not yet assembled.
     void
-    assemble_zone_matrices();
+    ensure_matrices() const;
+    // The loads, if not yet assembled (with the matrices first if a support
+    // prescribes a displacement).
     void
-    assemble_loads();
+    ensure_loads() const;
+    void
+    assemble_zone_matrices() const;
+    void
+    assemble_loads() const;
     void
     form_global_matrices() const;
 
@@ -290,23 +334,28 @@ namespace FuzzyContact
     std::vector<Point<2>>       support_points_;
     std::vector<unsigned char>  dof_directions_;
 
-    SparsityPattern                   sparsity_pattern_;
-    std::vector<SparseMatrix<double>> zone_stiffness_;
-    std::vector<SparseMatrix<double>> zone_mass_;
-    std::vector<double>               zone_moduli_;
-    std::vector<double>               zone_densities_;
+    std::vector<double> zone_moduli_;
+    std::vector<double> zone_densities_;
+    // Assembled at construction or on first use (see the top of this file).
+    mutable bool                              assembled_       = false;
+    mutable bool                              loads_assembled_ = false;
+    mutable SparsityPattern                   sparsity_pattern_;
+    mutable std::vector<SparseMatrix<double>> zone_stiffness_;
+    mutable std::vector<SparseMatrix<double>> zone_mass_;
     // Formed from the zone matrices on demand (see set_zone_materials()).
-    mutable SparseMatrix<double> stiffness_;
-    mutable SparseMatrix<double> mass_;
-    mutable bool                 matrices_current_ = false;
-    std::vector<Vector<double>>  unit_loads_;
-    Vector<double>               load_;
+    mutable SparseMatrix<double>        stiffness_;
+    mutable SparseMatrix<double>        mass_;
+    mutable bool                        matrices_current_ = false;
+    mutable std::vector<Vector<double>> unit_loads_;
+    mutable Vector<double>              load_;
     // Per support with a non-zero displacement: the field of unit
     // magnitude along it on the DoFs it holds, and per zone the nodal
     // forces -K_z,fp u_p (free rows) and K_z,pp u_p (held rows) it needs.
-    std::vector<Vector<double>>              displacement_fields_;
-    std::vector<std::vector<Vector<double>>> displacement_zone_loads_;
-    std::vector<bool>                        prescribed_;
+    std::vector<Vector<double>>                      displacement_fields_;
+    mutable std::vector<std::vector<Vector<double>>> displacement_zone_loads_;
+    // Whether they are formed (by the assembly, or given).
+    mutable bool      displacement_loads_formed_ = false;
+    std::vector<bool> prescribed_;
     // A pinned body's free motions, their names and its pins.
     std::vector<Vector<double>>          free_motions_;
     std::vector<std::string>             free_motion_names_;

@@ -6,8 +6,9 @@
 //
 // Many bounds share their argument (a vertex is the bound of several
 // outputs and levels): each distinct point is evaluated once, the points
-// dealt round robin to the ranks of the communicator and the values
-// gathered on all of them.
+// (sorted) dealt in contiguous blocks to the ranks of the communicator (so
+// that points sharing their stiffness stay on one rank, and with them the
+// exact solver's factorisation) and the values gathered on all of them.
 
 #ifndef fuzzycontact_fuzzy_bound_proof_h
 #define fuzzycontact_fuzzy_bound_proof_h

@@ -31,6 +31,13 @@ namespace FuzzyContact
     /** True if lower - tolerance <= x <= upper + tolerance. */
     bool
     contains(const double x, const double tolerance = 0) const;
+
+    template <class Archive>
+    void
+    serialize(Archive &ar, const unsigned int)
+    {
+      ar &lower &upper;
+    }
   };
 
   class FuzzyNumber

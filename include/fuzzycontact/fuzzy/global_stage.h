@@ -49,6 +49,18 @@ namespace FuzzyContact
     };
 
     /**
+     * The points the global stage evaluates in the box [@p lower, @p upper]
+     * whatever its seeds: its vertices (for fewer than 20 free parameters)
+     * and the @p unit_design mapped into it (none if the box is a point),
+     * in this order, as global_stage() evaluates them (clipped into the
+     * box). They can be evaluated ahead (EvaluationCache::prefetch()).
+     */
+    std::vector<VectorType>
+    fixed_points(const std::vector<VectorType> &unit_design,
+                 const VectorType              &lower,
+                 const VectorType              &upper);
+
+    /**
      * The points of the global stage in the box [@p lower, @p upper]: the
      * @p unit_design mapped into it (none if the box is a point), its
      * vertices (for fewer than 20 free parameters) and the @p seeds

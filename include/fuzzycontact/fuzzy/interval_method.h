@@ -48,21 +48,51 @@ namespace FuzzyContact
    * Remembers every evaluation of a response (keyed by the exact parameter
    * values), so that the corners and optima that several outputs and levels
    * share are computed once, and counts the evaluations really made.
+   *
+   * Shared over the ranks of a communicator (with several ranks), it holds
+   * the same values on every rank, and every distinct point is evaluated
+   * once over all of them: every rank must then ask for the same points in
+   * the same order (run the same deterministic algorithm), since each
+   * evaluation is made by one rank and sent to the others. A point asked
+   * for alone is evaluated by the ranks in turn (the others wait); the
+   * points of prefetch() are spread over the ranks. A failed evaluation
+   * throws its message on every rank.
    */
   class EvaluationCache
   {
   public:
-    explicit EvaluationCache(const Response &response);
+    explicit EvaluationCache(const Response &response,
+                             const MPI_Comm  comm = MPI_COMM_SELF);
 
+    /** The response at @p parameters (collective when shared). */
     const std::vector<double> &
     operator()(const std::vector<double> &parameters);
 
-    /** Evaluations of the response (cache misses). */
+    /**
+     * Evaluates those of @p points that are not known yet, each once, dealt
+     * round robin to the ranks (collective when shared).
+     */
+    void
+    prefetch(const std::vector<std::vector<double>> &points);
+
+    /** Distinct points known (the same on every rank when shared). */
     unsigned long
     n_evaluations() const;
 
+    /**
+     * Evaluations of the response made on this rank (n_evaluations() with
+     * one rank; their sum over the ranks of a shared cache is
+     * n_evaluations()).
+     */
+    unsigned long
+    n_evaluated_here() const;
+
   private:
     Response                                           response;
+    MPI_Comm                                           comm;
+    unsigned int                                       n_ranks = 1, rank = 0;
+    unsigned long                                      n_alone = 0;
+    unsigned long                                      n_here  = 0;
     std::map<std::vector<double>, std::vector<double>> values;
   };
 
@@ -135,6 +165,14 @@ namespace FuzzyContact
      * optimisation method only; empty for the sampling methods).
      */
     std::vector<std::vector<BoundQuality>> lower_quality, upper_quality;
+
+    template <class Archive>
+    void
+    serialize(Archive &ar, const unsigned int)
+    {
+      ar &alpha &bounds &argmin &argmax &n_evaluations &wall_time &notes
+        &lower_quality &upper_quality;
+    }
   };
 
   /**
@@ -145,6 +183,25 @@ namespace FuzzyContact
   max_relative_difference(const std::vector<Interval> &bounds,
                           const std::vector<Interval> &reference,
                           const double                 floor = 0);
+
+  class IntervalMethod;
+
+  /**
+   * @p method's bounds of @p response, computed on @p solving (a
+   * communicator of those ranks of @p comm that can evaluate @p response,
+   * for instance FuzzyContactModel::reduced_communicator(); MPI_COMM_NULL
+   * on the others) and sent to every rank of @p comm. With
+   * @p solving = @p comm, method.bounds() on @p comm. Collective on
+   * @p comm.
+   */
+  FuzzyOutputBounds
+  bounds_on_ranks(const IntervalMethod           &method,
+                  const std::vector<FuzzyNumber> &parameters,
+                  const std::vector<double>      &alpha,
+                  const Response                 &response,
+                  const std::vector<std::string> &output_names,
+                  const MPI_Comm                  comm,
+                  const MPI_Comm                  solving);
 
   /** The interface of the interval methods (see the top of this file). */
   class IntervalMethod

@@ -78,6 +78,14 @@ namespace FuzzyContact
       double
       at(const VectorType &x);
 
+      /**
+       * Evaluates the points @p xs ahead, together (spread over the ranks
+       * of a shared cache, EvaluationCache::prefetch()).
+       */
+      void
+      prefetch(const std::vector<VectorType> &xs);
+
+      /** The finite-difference gradient (its points prefetched together). */
       void
       gradient_at(VectorType &grad, const VectorType &x0);
 

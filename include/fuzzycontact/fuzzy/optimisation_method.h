@@ -38,9 +38,15 @@
 // Differences below the response tolerance (the model's accuracy) are no
 // evidence of non-monotonicity.
 //
-// The chains (one per output and direction) are dealt to the MPI ranks and
-// gathered on all of them; the bounds do not depend on the number of ranks
-// for a response that is a pure function of its parameters.
+// With several MPI ranks, every rank runs every chain (one per output and
+// direction) on one evaluation cache shared by the ranks (interval_method.h):
+// the points every chain needs (the vertices and the design of every
+// level's box) are evaluated first, spread over the ranks, and so are the
+// points of each finite-difference gradient and each poll of the pattern
+// search; every other point is evaluated by one rank and sent to all. Each
+// distinct point is thus evaluated once, as with one process, and the
+// bounds are those of one process for a response that is a pure function
+// of its parameters.
 //
 // It is one of the interval methods of interval_method.h (see there for
 // the others and for where to add one).

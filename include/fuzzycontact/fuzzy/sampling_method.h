@@ -2,9 +2,10 @@
 // points fixed in advance and take, per output and level, the smallest and
 // largest value over the points inside the level's box.
 //
-// The points are dealt round robin to the ranks of the MPI communicator and
-// the outputs of all points are gathered on every rank, so the bounds do
-// not depend on the number of ranks.
+// The points are dealt to the ranks of the MPI communicator in contiguous
+// blocks (neighbouring samples often share the exact solver's
+// factorisation) and the outputs of all points are gathered on every rank,
+// so the bounds do not depend on the number of ranks.
 //
 // Two are provided: VertexMethod (vertex_method.h) and ExtensionPrinciple
 // (extension_principle.h). To add one: derive from SamplingMethod and

@@ -14,6 +14,7 @@
 #include <fuzzycontact/fuzzy/interval_method.h>
 #include <fuzzycontact/output/output_files.h>
 #include <fuzzycontact/output/report.h>
+#include <fuzzycontact/study/fuzzy_contact_model.h>
 #include <fuzzycontact/study/observations.h>
 
 #include <nlohmann/json.hpp>
@@ -46,6 +47,8 @@ namespace FuzzyContact
     bool        has_proofs = false;
     /** Per parameter: why it cannot change the answer (empty: it can). */
     std::vector<std::string> inert;
+    /** What each MPI rank assembled and factorised. */
+    std::vector<RankWork> ranks;
   };
 
   namespace FuzzyStudyReport
@@ -57,6 +60,16 @@ namespace FuzzyContact
           const unsigned int                 n_processes,
           const std::vector<FuzzyParameter> &parameters,
           const unsigned int                 n_alpha);
+
+    /**
+     * The line announcing the Extension Principle's @p n_samples exact
+     * solves (@p points per parameter and level, factorisations reused or
+     * independent analyses).
+     */
+    std::string
+    extension_principle(const unsigned long n_samples,
+                        const unsigned int  points,
+                        const bool          reuse_factorisations);
 
     /**
      * The bound tables of every output, the non-monotone responses and the

@@ -34,6 +34,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <boost/serialization/string.hpp>
 #include <boost/serialization/vector.hpp>
 
 #include <memory>
@@ -94,7 +95,7 @@ namespace FuzzyContact
     FullMatrix<double>          rigid_observation;
     std::vector<std::string>    motion_names;
 
-    /** For Utilities::MPI::broadcast (the ranks exchange these blocks). */
+    /** For Utilities::MPI::broadcast and other serialisation. */
     template <class Archive>
     void
     serialize(Archive &archive, const unsigned int)

@@ -55,6 +55,7 @@
 #include <fuzzycontact/reduction/reduced_component.h>
 #include <fuzzycontact/scene/scene.h>
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -79,6 +80,19 @@ namespace FuzzyContact
     ReducedContactModel(std::vector<ReducedComponentMatrices> components,
                         const Vector<double>                 &g_initial,
                         const std::vector<double>            &mu);
+    /**
+     * The same, with the components' blocks formed on different MPI ranks:
+     * component c's on rank @p owner[c] of @p comm from @p components[c]
+     * (read there only), and sent to the other ranks (W_c or its factor,
+     * its diagonal, load gaps and observation blocks; not its reduced
+     * matrices, so that coordinates() of c is available on its owner only).
+     * Every rank then solves with the same numbers. Collective.
+     */
+    ReducedContactModel(std::vector<ReducedComponentMatrices> components,
+                        const Vector<double>                 &g_initial,
+                        const std::vector<double>            &mu,
+                        const std::vector<unsigned int>      &owner,
+                        const MPI_Comm                        comm);
     // The problem's flexibility operator refers to this object.
     ReducedContactModel(const ReducedContactModel &) = delete;
     ReducedContactModel &
@@ -151,7 +165,8 @@ namespace FuzzyContact
     /**
      * Modal coordinates q_c = K_r,c^{-1} (lambda f_r,c + C_r,c^T p); with a
      * fixed part, those of the variable part followed by those of the
-     * fixed one.
+     * fixed one. Empty for a component whose blocks were formed on another
+     * MPI rank (see the constructor).
      */
     std::vector<Vector<double>>
     coordinates(const Vector<double> &p, const double load_factor) const;
@@ -185,16 +200,35 @@ namespace FuzzyContact
       FullMatrix<double>          observation_flexibility;
       std::vector<Vector<double>> observation_loads;
       bool                        present = false;
+      // False for blocks formed on another MPI rank: matrices has its
+      // reference forces and observed DoFs only, and factor is empty.
+      bool has_matrices = false;
 
       // Adds a W_c(:, j) to @p w.
       void
       add_column(const unsigned int j, const double a, double *w) const;
+
+      // What another rank needs to solve (the blocks, not the matrices).
+      template <class Archive>
+      void
+      serialize(Archive &ar, const unsigned int)
+      {
+        ar &matrices.reference_forces &matrices.stiffness_proportional &matrices
+          .observed_dofs &matrices.rigid_gaps &matrices.rigid_loads &matrices
+          .rigid_observation                                        &matrices
+          .motion_names &low_rank &flexibility &U &diagonal &load_gaps
+            &observation_flexibility &observation_loads &present;
+      }
     };
     class Flexibility;
 
     // Checks and factorises a part's matrices, and forms its blocks.
     void
     compute_blocks(Part &part) const;
+    // The free motions of the bodies held by contact alone, from every
+    // component's matrices (first_motion, the problem's RigidMotions).
+    void
+    collect_free_motions();
     // The state of W changed: columns are combined afresh.
     void
     flexibility_changed();

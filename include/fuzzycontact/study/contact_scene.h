@@ -33,11 +33,17 @@ namespace FuzzyContact
      * interface (initial penetration beyond @p penetration_tolerance times
      * the master face length is refused). Stages are timed in @p timer if
      * given ("mesh and DoFs", "assembly", "contact interface").
+     *
+     * @p assemble: which components to assemble now (empty: all); the
+     * others get their mesh and DoFs only, and are assembled where their
+     * matrices or loads are first needed (an MPI rank that does not build
+     * a component's reduced model needs its geometry only).
      */
-    ContactScene(const Scene       &scene,
-                 const unsigned int mesh_refinements,
-                 const double       penetration_tolerance = 1e-8,
-                 TimerOutput       *timer                 = nullptr);
+    ContactScene(const Scene             &scene,
+                 const unsigned int       mesh_refinements,
+                 const double             penetration_tolerance = 1e-8,
+                 TimerOutput             *timer                 = nullptr,
+                 const std::vector<bool> &assemble              = {});
 
     const Scene &
     scene() const;
@@ -81,12 +87,53 @@ namespace FuzzyContact
     stiffness_factorisation(const unsigned int c,
                             TimerOutput       *timer = nullptr) const;
 
+    /**
+     * Whether component @p c's stiffness is factorised at its current
+     * materials (made here or set by set_stiffness_factorisation()).
+     */
+    bool
+    has_stiffness_factorisation(const unsigned int c) const;
+
+    /**
+     * Gives component @p c the factorisation @p factorisation of its
+     * stiffness at its current materials, made elsewhere (by another MPI
+     * rank, see share_stiffness_factorisations()), instead of making it.
+     */
+    void
+    set_stiffness_factorisation(
+      const unsigned int                    c,
+      std::shared_ptr<const SparseCholesky> factorisation);
+
+    /**
+     * Every component's stiffness factorisation at the scene's materials,
+     * made on rank @p owner[c] of @p comm (and there only, if not made
+     * yet), on every rank: the other ranks receive a copy of the factor
+     * (SparseCholesky::broadcast()) instead of factorising the stiffness
+     * again. So are the forces of prescribed displacements
+     * (Component::displacement_zone_loads()), which come from the
+     * stiffness: the other ranks need not assemble the component for its
+     * loads. The components are set to the scene's materials first.
+     * Collective.
+     */
+    void
+    share_stiffness_factorisations(const std::vector<unsigned int> &owner,
+                                   const MPI_Comm                   comm,
+                                   TimerOutput *timer = nullptr);
+
+    /**
+     * How many times component @p c's stiffness was factorised here (not
+     * counting factorisations set from elsewhere).
+     */
+    unsigned int
+    n_factorisations(const unsigned int c) const;
+
   private:
     Scene                                                      scene_;
     std::vector<std::unique_ptr<Component>>                    owned;
     std::vector<const Component *>                             components_;
     std::unique_ptr<ContactInterface>                          interface_;
     mutable std::vector<std::shared_ptr<const SparseCholesky>> factorisations;
+    mutable std::vector<unsigned int>                          n_factorised;
   };
 } // namespace FuzzyContact
 

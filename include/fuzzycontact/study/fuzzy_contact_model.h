@@ -77,6 +77,22 @@ namespace FuzzyContact
     parse_parameters(ParameterHandler &prm);
   };
 
+  /** What one MPI rank did of the offline build, by component name. */
+  struct RankWork
+  {
+    /** Components whose matrices this rank assembled. */
+    std::vector<std::string> assembled;
+    /** Components whose stiffness this rank factorised. */
+    std::vector<std::string> factorised;
+
+    template <class Archive>
+    void
+    serialize(Archive &ar, const unsigned int)
+    {
+      ar &assembled &factorised;
+    }
+  };
+
   class FuzzyContactModel
   {
   public:
@@ -84,6 +100,13 @@ namespace FuzzyContact
      * Builds everything parameter-independent for @p scene, the fuzzy
      * parameters of @p fuzzy (bound to the same scene) and the outputs
      * named in @p outputs. Stages are timed in @p timer if given.
+     *
+     * With several ranks in @p comm, each component is assembled,
+     * factorised and reduced on one rank (ReducedOrderModel::builders():
+     * component c on rank c mod n, or the re-analysed components on the
+     * first rank and the others on the others), its reduced blocks sent to
+     * all; the other ranks mesh it (for the contact interface and the
+     * outputs) but do not assemble it.
      */
     FuzzyContactModel(const Scene                     &scene,
                       const FuzzyParameterSet         &fuzzy,
@@ -91,6 +114,18 @@ namespace FuzzyContact
                       const FuzzyContactModelSettings &settings,
                       TimerOutput                     *timer = nullptr,
                       const MPI_Comm                   comm  = MPI_COMM_SELF);
+
+    ~FuzzyContactModel();
+
+    /**
+     * The ranks that can evaluate reduced(): the communicator of the
+     * constructor, or, where components are re-analysed and several ranks
+     * build them, one of the first rank alone (MPI_COMM_NULL on the
+     * others, which must not call reduced()). Interval methods on the
+     * reduced model run on it (bounds_on_ranks()).
+     */
+    MPI_Comm
+    reduced_communicator() const;
 
     /** The outputs, in the order of the values returned. */
     const Observations &
@@ -118,6 +153,26 @@ namespace FuzzyContact
     /** See FullOrderModel; default false. */
     void
     set_reuse_factorisations(const bool reuse);
+
+    /**
+     * Where the components were built on different ranks: every rank gets
+     * the stiffness factorisations made on the others (copies of their
+     * factors, ContactScene::share_stiffness_factorisations()), so that the
+     * exact solves that reuse them (full_order() with
+     * set_reuse_factorisations(true)) factorise nothing again and give the
+     * same numbers on every rank. Nothing to do otherwise. Collective over
+     * the communicator of the constructor; returns its wall time [s] (the
+     * longest over the ranks).
+     */
+    double
+    share_factorisations(TimerOutput *timer = nullptr);
+
+    /**
+     * What every rank did of the build so far (collective; on every rank,
+     * one entry per rank).
+     */
+    std::vector<RankWork>
+    work_per_rank() const;
 
     /** A few lines on what the model is: meshes, bases, outputs. */
     std::string
@@ -185,6 +240,10 @@ namespace FuzzyContact
     std::string                        solver_name;
     std::string                        skipped_stages;
     std::vector<std::string>           inert_parameters;
+    MPI_Comm                           comm;
+    MPI_Comm                           reduced_ranks     = MPI_COMM_NULL;
+    bool                               own_reduced_ranks = false;
+    std::vector<unsigned int>          builder; // the rank of each component
     unsigned int                       n_ranks_building = 1;
   };
 } // namespace FuzzyContact

@@ -103,6 +103,14 @@ namespace FuzzyContact
           const double             penetration_tolerance = 1e-8);
 
     /**
+     * The warning of a study whose fuzzy parameters are all crisp (their
+     * supports have no width: every membership function is then a single
+     * value), or an empty string.
+     */
+    std::string
+    all_crisp_warning(const FuzzyParameterSet &fuzzy);
+
+    /**
      * Reads the scene files of a contact study with the same settings:
      * Scene::read(), at least one contact pair, and check_scene(), whose
      * warnings it collects.

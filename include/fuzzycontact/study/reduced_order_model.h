@@ -99,14 +99,26 @@ namespace FuzzyContact
     ~ReducedOrderModel() override;
 
     /**
-     * Whether the components' builds are spread over the ranks of the
-     * communicator (component c on rank c mod n, its reduced blocks sent
-     * to all): with several ranks, unless a component is re-analysed
-     * (zone parameters), which every rank then builds whole.
+     * The rank of @p comm that builds each of the @p n_components
+     * components (its basis, reduced matrices and blocks of the reduced
+     * contact problem, sent to the other ranks): component c on rank
+     * c mod n; but if the @p varying quantities make some components
+     * re-analysed (zone parameters), those on the first rank, which alone
+     * can then solve (it holds their reanalyses), and the others on the
+     * other ranks in turn. All 0 with one rank.
      */
-    static bool
-    spreads_components(const std::vector<VaryingQuantity> &varying,
-                       const MPI_Comm                      comm);
+    static std::vector<unsigned int>
+    builders(const unsigned int                  n_components,
+             const std::vector<VaryingQuantity> &varying,
+             const MPI_Comm                      comm);
+
+    /**
+     * Whether this rank can solve: it holds the reanalysis of every
+     * re-analysed component (always with one rank, or without re-analysed
+     * components). set_state() and solve() are refused on the others.
+     */
+    bool
+    solves_here() const;
 
     /** "reduced" and the solver's name, e.g. "reduced (fl2c)". */
     std::string
