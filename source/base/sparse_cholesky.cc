@@ -280,30 +280,8 @@ namespace FuzzyContact
   void
   SparseCholesky::solve(Vector<double> &b) const
   {
-    Assert(data->factor != nullptr, ExcMessage("factorize() first."));
     AssertDimension(b.size(), n());
-    cholmod_dense rhs = cholmod_dense();
-    rhs.nrow          = b.size();
-    rhs.ncol          = 1;
-    rhs.nzmax         = b.size();
-    rhs.d             = b.size();
-    rhs.x             = b.data();
-    rhs.xtype         = CHOLMOD_REAL;
-    rhs.dtype         = CHOLMOD_DOUBLE;
-    const int ok      = cholmod_l_solve2(CHOLMOD_A,
-                                    data->factor,
-                                    &rhs,
-                                    nullptr,
-                                    &data->x,
-                                    nullptr,
-                                    &data->y,
-                                    &data->e,
-                                    &data->common);
-    AssertThrow(ok == 1,
-                ExcMessage("CHOLMOD's solve failed with status " +
-                           std::to_string(data->common.status) + "."));
-    const double *x = static_cast<const double *>(data->x->x);
-    std::copy(x, x + b.size(), b.begin());
+    solve(b.data(), 1);
   }
 
 
