@@ -562,7 +562,8 @@ namespace FuzzyContact
     LoadStep full_load;
     full_load.rigid      = rigid_.size() > 0 ? &rigid_ : nullptr;
     full_load.rigid_load = rigid_load();
-    full_load.rigid_load *= load_factor_;
+    if (full_load.rigid_load.size() > 0)
+      full_load.rigid_load *= load_factor_;
     for (unsigned int refinement = 0;; ++refinement)
       {
         solution.displacements.clear();
@@ -607,7 +608,8 @@ namespace FuzzyContact
                                                       full_load.rigid,
                                                       imbalance);
         final_state.p += change.p;
-        final_state.rigid += change.rigid;
+        if (change.rigid.size() > 0) // (no body held by contact alone)
+          final_state.rigid += change.rigid;
       }
     solution.p      = final_state.p;
     solution.rigid  = final_state.rigid;
