@@ -1,17 +1,19 @@
 // A block on a slope against statics: prm/slope.prm, a block held by
 // nothing but its contact on a 20-degree slope, pressed by a vertical
-// force F on its top face. For each friction coefficient, the full-order
-// solver's normal and tangential contact forces are set beside statics'
-// N = F cos(theta) and T = F sin(theta), which hold whatever the pressure
-// distribution as long as the block stays put (mu >= tan(theta)); below
-// tan(theta) there is no static equilibrium, which the solver reports (the
-// unbalanced fraction of the load's resultant). The reduced model (modes +
-// static correction, FL2C) is set beside the full order; the block's
-// rigid-body part (a least-squares fit of its displacement) shows it does
-// not move as a whole beyond the elastic deformation. doc/validation.md
+// force F on its top face (or, prm/slope-weight.prm, under its own weight
+// F = rho g A t: the block's area A from its mesh). For each friction
+// coefficient, the full-order solver's normal and tangential contact forces are
+// set beside statics' N = F cos(theta) and T = F sin(theta), which hold
+// whatever the pressure distribution as long as the block stays put (mu >=
+// tan(theta)); below tan(theta) there is no static equilibrium, which the
+// solver reports (the unbalanced fraction of the load's resultant). The reduced
+// model (modes + static correction, FL2C) is set beside the full order; the
+// block's rigid-body part (a least-squares fit of its displacement) shows it
+// does not move as a whole beyond the elastic deformation. doc/validation.md
 // records the output.
 //
 //   build/slope_statics [path/to/prm/slope.prm [mu ...]]
+//   build/slope_statics prm/slope-weight.prm
 
 #include <fuzzycontact/base/input.h>
 #include <fuzzycontact/contact/fl2c.h>
@@ -22,6 +24,7 @@
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
+#include <deal.II/grid/grid_tools.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -54,10 +57,17 @@ main(int argc, char **argv)
   if (coefficients.empty())
     coefficients =
       {0.2, 0.3, 0.99 * std::tan(theta), 1.01 * std::tan(theta), 0.4, 0.5, 1.0};
-  Scene        scene = Scene::read(file);
-  const double F     = scene.components[0].loads[0].total_force;
+  Scene scene = Scene::read(file);
 
-  ContactScene      bodies(scene, 0);
+  ContactScene     bodies(scene, 0);
+  const Component &block = bodies.component(0);
+  // The force on the block: its top load, or its weight rho |g| A t.
+  const double F =
+    scene.gravity.norm() > 0
+      ? scene.components[0].zones[0].density * scene.gravity.norm() *
+          GridTools::volume(block.triangulation(), block.mapping()) *
+          scene.components[0].thickness
+      : scene.components[0].loads[0].total_force;
   FullOrderModel    full(bodies, ObservedDofs(bodies.n_components()));
   ReducedOrderModel reduced(bodies,
                             component_modes(bodies, ModalParameters()),
@@ -67,11 +77,11 @@ main(int argc, char **argv)
   FL2CParameters    fl2c_parameters;
   fl2c_parameters.tolerance = 1e-10;
   const FL2CSolver fl2c(fl2c_parameters);
-  const Component &block = bodies.component(0);
 
   std::cout << "Block on a slope (" << file
             << ", theta = 20 deg, tan(theta) = " << std::setprecision(4)
-            << std::tan(theta) << ", F = " << F << " N/m; "
+            << std::tan(theta) << ", F = " << F
+            << (scene.gravity.norm() > 0 ? " N/m (its weight)" : " N/m") << "; "
             << bodies.n_dofs()[0] << "/" << bodies.n_dofs()[1] << " DoFs, "
             << bodies.interface().n_nodes()
             << " slave nodes; full-order solver, and FL2C on modes + static "

@@ -94,3 +94,34 @@ fuzzycontact_program_test(step-3.bad_input.block_slides step-3 slope
   "-DEDIT_FROM=set friction coefficient = 0.5"
   "-DEDIT_TO=set friction coefficient = 0.3"
   "-DMESSAGE=step-3-slope.prm: full-order contact solver: no static equilibrium \\(load step 1\\): the bodies held by contact alone cannot be held.*Block: translation along \\(1, 0\\).*the body slides: it needs friction coefficients 1.213.* times the present ones \\(the largest, 0.3, would be 0.36397")
+
+# The block on the slope under its own weight (prm/slope-weight.prm,
+# through prm/step-3-slope.prm): every solver carries statics' N = W cos 20
+# = 364.126 N and T = W sin 20 = 132.531 N (W = rho g A t), and the case
+# line says the loading is gravity. A force cannot scale a weight: 'load =
+# <force>' is refused on a scene with gravity.
+set(step3_slope_weight
+  -DPRM=${CMAKE_SOURCE_DIR}/prm/step-3-slope.prm
+  -DOUTPUT=step-3-slope-output
+  -DEXTRA_FILES=${CMAKE_SOURCE_DIR}/prm/meshes
+  -DEDIT_FILE=step
+  "-DEDIT_FROM=set scenes                  = slope.prm"
+  "-DEDIT_TO=set scenes = slope-weight.prm")
+fuzzycontact_program_test(step-3.slope_weight step-3 slope-weight
+  -DEXPECT=success
+  ${step3_slope_weight}
+  "-DMESSAGE=gravity \\(0, -9.81\\) m/s\\^2.*\n full_order +3.64126e\\+02 +1.32531e\\+02.*\n reduced_exact +3.64126e\\+02 +1.32531e\\+02.*\n fl2c_corrected +3.64126e\\+02 +1.32531e\\+02")
+fuzzycontact_program_test(step-3.bad_input.force_scales_weight step-3 slope-weight
+  -DEXPECT=failure
+  ${step3_slope_weight}
+  -DEDIT2_FILE=step
+  "-DEDIT2_FROM=set load                    = scene"
+  "-DEDIT2_TO=set load = 50000"
+  "-DMESSAGE=load = 50000.*: scene slope-weight has gravity \\(the weight of every component\\), which a force cannot scale; set load = scene")
+fuzzycontact_program_test(step-3.bad_input.gravity_out_of_range step-3 slope-weight
+  -DEXPECT=failure
+  ${step3_slope_weight}
+  -DEDIT2_FILE=scene
+  "-DEDIT2_FROM=set gravity       = 0, -9.81"
+  "-DEDIT2_TO=set gravity = 0, -9.81e5"
+  "-DMESSAGE=Scene file <[^>]*slope-weight.prm>: Scene: gravity \\(its magnitude\\) must lie between 0 and 10000")

@@ -1158,3 +1158,61 @@ end
             }).find("Vary the modulus of the whole body (Upper.E)"),
             std::string::npos);
 }
+
+// With gravity a density is no longer inert: it scales the weight of its
+// zones. The column on its footing (prm/column.prm) with two density
+// layers in the column: a zone density (Column.upper.rho), a body's
+// density (Footing.rho) and the moduli of both bodies. At the corners of
+// the box and its centre, the reduced model (FL2C and the exact reduced
+// solver: the weight's exact zone responses, scaled by the densities and
+// 1/s), the independent full-order analyses and the reusing reference
+// (its factorisations stay: the densities do not change the stiffness)
+// all give the uniaxial closed form.
+TEST(FuzzyContactModel, DensitiesScaleTheWeightUnderGravity)
+{
+  Scene scene = Scene::read(source_dir + "/prm/column.prm");
+  scene.components[0].implicit_zone = false;
+  scene.components[0].zones         = {
+            MaterialZone{"lower", {{0, 0.1}}, {{0.2, 0.7}}, 210e9, 0.3, 7900},
+            MaterialZone{"upper", {{0, 0.1}}, {{0.7, 1.2}}, 210e9, 0.3, 7900}};
+  const FuzzyParameterSet        set     = fuzzy_parameters(scene, R"(
+set fuzzy parameters = Column.upper.rho, Footing.rho, Column.E, Footing.E
+subsection Fuzzy parameter Column.upper.rho
+  set values   = 0.5, 1, 2
+  set relative = true
+end
+subsection Fuzzy parameter Footing.rho
+  set values = 2000, 2400, 2800
+end
+subsection Fuzzy parameter Column.E
+  set values   = 0.9, 1, 1.1
+  set relative = true
+end
+subsection Fuzzy parameter Footing.E
+  set values   = 0.8, 1, 1.25
+  set relative = true
+end
+)");
+  const std::vector<std::string> outputs = {"Fn",
+                                            "Column.node(0.05, 1.2).uy",
+                                            "Footing.node(0.05, 0.2).uy"};
+  FuzzyContactModel independent(scene, set, outputs, coarse_settings());
+  FuzzyContactModel reusing(scene, set, outputs, coarse_settings());
+  reusing.set_reuse_factorisations(true);
+  for (const std::string &why : independent.inert())
+    EXPECT_TRUE(why.empty()) << why;
+  EXPECT_EQ(independent.reanalysis_orders(), (std::vector<unsigned int>{0, 0}));
+  for (const auto &p : corners_and_centre(set))
+    {
+      const auto exact = column_closed_form(scene, set.state(scene, p));
+      for (const auto &v : {independent.full_order(p),
+                            reusing.full_order(p),
+                            independent.reduced(p),
+                            independent.reduced(p, ActiveSetSolver())})
+        {
+          EXPECT_NEAR(v[0], exact[0], 1e-10 * exact[0]);
+          EXPECT_NEAR(v[1], exact[2], 1e-9 * std::abs(exact[2]));
+          EXPECT_NEAR(v[2], exact[1], 1e-9 * std::abs(exact[1]));
+        }
+    }
+}

@@ -221,3 +221,64 @@ fuzzycontact_program_test(step-4.bad_input.unknown_parameter step-4 overlap
   "-DEDIT2_TO=subsection Fuzzy parameter P3.E"
   "-DMESSAGE=Scene quantity <P3.E>: the scene has no component <P3>")
 fuzzycontact_bad_input_tests(step-4 overlap "${step4_bad_inputs}")
+
+# step-4 under gravity (prm/step-4-column.prm: a column on a footing under
+# their own weights; the column's density is fuzzy and scales its weight),
+# 3 alpha levels, 3 points per parameter.
+step4_study_test(step-4.gravity step-4-column.prm column.prm
+  step-4-column-output check_step-4_column.cmake
+  "-DEDIT_FILE=step"
+  "-DEDIT_FROM=set number of alpha levels = 11"
+  "-DEDIT_TO=set number of alpha levels = 3"
+  "-DEDIT2_FILE=step"
+  "-DEDIT2_FROM=set points per dimension = 4"
+  "-DEDIT2_TO=set points per dimension = 3")
+
+# The same on two MPI ranks: the bodies' weights travel with their reduced
+# blocks (the zone responses), and each rank assembles and factorises its
+# own body only.
+add_test(NAME step-4.gravity_mpi_np2_same_as_np1
+  COMMAND ${CMAKE_COMMAND}
+    -DPROGRAM=$<TARGET_FILE:step-4>
+    -DPRM=${CMAKE_SOURCE_DIR}/prm/step-4-column.prm
+    -DSCENE=${CMAKE_SOURCE_DIR}/prm/column.prm
+    -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/work/step-4.gravity_mpi
+    -DOUTPUT=step-4-column-output
+    "-DEDIT_FILE=step"
+    "-DEDIT_FROM=set number of alpha levels = 11"
+    "-DEDIT_TO=set number of alpha levels = 3"
+    "-DEDIT2_FILE=step"
+    "-DEDIT2_FROM=set points per dimension = 4"
+    "-DEDIT2_TO=set points per dimension = 3"
+    "-DMPI_LAUNCHER=${DEAL_II_MPIEXEC}|${DEAL_II_MPIEXEC_NUMPROC_FLAG}|2"
+    "-DRANK_ASSEMBLED=Column|Footing"
+    "-DRANK_FACTORISED=Column|Footing"
+    -P ${CMAKE_CURRENT_SOURCE_DIR}/compare_mpi_runs.cmake)
+set_tests_properties(step-4.gravity_mpi_np2_same_as_np1 PROPERTIES
+  ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1"
+  PROCESSORS 2)
+
+# Under gravity the weight is no quantity of its own, and a zone's modulus
+# cannot vary (the weight's exact response would need new factorisations).
+fuzzycontact_program_test(step-4.bad_input.weight_force step-4 column
+  -DEXPECT=failure
+  -DPRM=${CMAKE_SOURCE_DIR}/prm/step-4-column.prm
+  -DOUTPUT=step-4-column-output
+  -DEDIT_FILE=step
+  "-DEDIT_FROM=Column.rho, Footing.E, Column.E"
+  "-DEDIT_TO=Column.weight.force, Footing.E, Column.E"
+  -DEDIT2_FILE=step
+  "-DEDIT2_FROM=subsection Fuzzy parameter Column.rho"
+  "-DEDIT2_TO=subsection Fuzzy parameter Column.weight.force"
+  "-DMESSAGE=Scene quantity <Column.weight.force>: the weight of component Column is not a quantity of its own: vary Column.rho")
+fuzzycontact_program_test(step-4.bad_input.zone_modulus_with_gravity step-4 column
+  -DEXPECT=failure
+  -DPRM=${CMAKE_SOURCE_DIR}/prm/step-4-column.prm
+  -DOUTPUT=step-4-column-output
+  -DEDIT_FILE=step
+  "-DEDIT_FROM=Column.rho, Footing.E, Column.E"
+  "-DEDIT_TO=Column.rho, Footing.body.E, Column.E"
+  -DEDIT2_FILE=step
+  "-DEDIT2_FROM=subsection Fuzzy parameter Footing.E"
+  "-DEDIT2_TO=subsection Fuzzy parameter Footing.body.E"
+  "-DMESSAGE=Scene quantity <Footing.body.E>: the scene has gravity.*Vary the modulus of the whole body \\(Footing.E\\)")

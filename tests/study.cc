@@ -5,9 +5,11 @@
 // is a scene with two contact pairs of different friction.
 
 #include <fuzzycontact/base/input.h>
+#include <fuzzycontact/base/sparse_cholesky.h>
 #include <fuzzycontact/contact/active_set_solver.h>
 #include <fuzzycontact/contact/fl2c.h>
 #include <fuzzycontact/contact/full_order_contact.h>
+#include <fuzzycontact/fe/component.h>
 #include <fuzzycontact/fuzzy/fuzzy_parameters.h>
 #include <fuzzycontact/fuzzy/vertex_method.h>
 #include <fuzzycontact/scene/scene.h>
@@ -19,9 +21,14 @@
 #include <fuzzycontact/study/observations.h>
 #include <fuzzycontact/study/reduced_order_model.h>
 
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+
 #include <gtest/gtest.h>
 
 #include "test_utilities.h"
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -449,6 +456,17 @@ namespace
                                       source_dir + "/prm/slope.prm");
     return s;
   }
+
+  // A refusal for want of static equilibrium whose message gives the
+  // friction coefficient the bodies need, expected to be @p needed.
+  void
+  expect_needs_friction(const std::string &m, const double needed)
+  {
+    EXPECT_NE(m.find("no static equilibrium"), std::string::npos) << m;
+    const auto at = m.find(", would be ");
+    ASSERT_NE(at, std::string::npos) << m;
+    EXPECT_NEAR(std::atof(m.c_str() + at + 11), needed, 1e-6 * needed) << m;
+  }
 } // namespace
 
 // A block on a 20-degree slope, pressed by a vertical force F on its top
@@ -501,16 +519,9 @@ TEST(FloatingBodies, BlockOnASlopeAgainstStatics)
       const std::string m = error_of([&] {
         three_ways(slope_with_friction(mu), {"Fn"});
       });
-      EXPECT_NE(m.find("no static equilibrium"), std::string::npos)
-        << "mu = " << mu << ": " << m;
       EXPECT_NE(m.find("Block: rotation about"), std::string::npos) << m;
       // The friction it needs is statics' tan(theta).
-      const auto needed = m.find(", would be ");
-      ASSERT_NE(needed, std::string::npos) << m;
-      EXPECT_NEAR(std::atof(m.c_str() + needed + 11),
-                  std::tan(theta),
-                  1e-6 * std::tan(theta))
-        << m;
+      expect_needs_friction(m, std::tan(theta));
     }
 }
 
@@ -584,4 +595,280 @@ TEST(FloatingBodies, RollerWithLittleFriction)
       EXPECT_NEAR(w[1], 0., 1e-5 * P);
       EXPECT_NEAR(w[1], v[0][1], 1e-10 * P);
     }
+}
+
+
+// ----------------------------------------------------------------------------
+// Body weight (gravity)
+// ----------------------------------------------------------------------------
+
+namespace
+{
+  const std::vector<std::string> column_outputs = {"Fn",
+                                                   "Column.node(0.05, 1.2).uy",
+                                                   "Footing.node(0.05, 0.2).uy",
+                                                   "Ft"};
+} // namespace
+
+// A steel column standing on a concrete footing under their own weights
+// (prm/column.prm; rollers on the sides: a uniaxial state, the column held
+// vertically by its contact alone). Statics: the contact force is the
+// column's weight rho g W H t, to round-off in every model (the weight's
+// resultant along the column's free motion must include the pinned DoF's
+// share, which the condensed load vector leaves out). The displacements
+// are quadratic in y, which Q2 represents exactly: every node of both
+// bodies against the closed form, in every model, the reduced models'
+// fields (the VTU output) included.
+TEST(Gravity, ColumnOnAFootingAgainstTheUniaxialSolution)
+{
+  const Scene  s     = scene("column");
+  const auto   exact = column_closed_form(s, SceneState(s));
+  const double Fn    = 7900 * 9.81 * 0.1 * 1.0 * 1.0; // rho g W H t
+  ASSERT_NEAR(exact[0], Fn, 1e-12 * Fn);
+  for (const auto &v : three_ways(s, column_outputs))
+    {
+      EXPECT_NEAR(v[0], Fn, 1e-10 * Fn);
+      EXPECT_NEAR(v[1], exact[2], 1e-9 * std::abs(exact[2]));
+      EXPECT_NEAR(v[2], exact[1], 1e-9 * std::abs(exact[1]));
+      EXPECT_NEAR(v[3], 0., 1e-10 * Fn);
+    }
+
+  // Every node's u_y (and u_x = 0) against the closed form: the
+  // full-order fields and the exact reduced model's (the column's
+  // weight's exact response plus V q).
+  ContactScene       bodies(s, 0);
+  const Observations outputs(column_outputs, bodies);
+  FullOrderModel     full(bodies, outputs.dofs());
+  full.set_state(SceneState(s));
+  ReducedOrderModel reduced(bodies,
+                            component_modes(bodies, ModalParameters()),
+                            outputs.dofs(),
+                            std::vector<VaryingQuantity>(),
+                            ReducedModelSettings());
+  reduced.set_state(SceneState(s));
+  const auto   fields = {full.solve().displacements,
+                         reduced.displacement_fields(
+                         reduced.solve(ActiveSetSolver()))};
+  const double g = 9.81, Hb = 0.2, p = 7900 * g * 1.0;
+  const double Eb = oedometric(30e9, 0.2), Ec = oedometric(210e9, 0.3);
+  const auto   u_y = [&](const double y) {
+    if (y <= Hb)
+      return -(p * y + 2400 * g * (Hb * y - y * y / 2)) / Eb;
+    const double s = y - Hb; // in the column
+    return exact[1] - 7900 * g * (1.0 * s - s * s / 2) / Ec;
+  };
+  for (const auto &u : fields)
+    {
+      ASSERT_EQ(u.size(), 2u);
+      double worst = 0;
+      for (unsigned int c = 0; c < 2; ++c)
+        for (unsigned int i = 0; i < u[c].size(); ++i)
+          {
+            const Component &body = bodies.component(c);
+            const double     y    = body.support_points()[i][1];
+            const double expected = body.dof_directions()[i] == 1 ? u_y(y) : 0.;
+            worst = std::max(worst, std::abs(u[c][i] - expected));
+          }
+      EXPECT_LT(worst, 1e-9 * std::abs(exact[2]));
+    }
+}
+
+// The column of prm/column.prm clamped at its base (no contact), solved
+// directly (Component, CHOLMOD): the top's u_y against the uniaxial closed
+// form -rho g H^2 / (2 E'), and the base reaction, the traction of the FE
+// stress integrated over the base, against the weight rho g W H t (Q2
+// represents the quadratic u_y exactly: both to round-off). Pinned instead
+// (held by its contact alone), its weight's resultant along its free
+// motion is the whole weight, the pin's share included.
+TEST(Gravity, ClampedColumnReactionAndShortening)
+{
+  const Scene          s = scene("column");
+  ComponentDescription d = s.components[0];
+  d.clamped_faces        = {"bottom"};
+  Component column(d, s.plane_model);
+  ASSERT_EQ(column.weight_load(), 0);
+  SparseCholesky K;
+  K.factorize(column.stiffness_matrix(), {}, "the clamped column");
+  Vector<double> u = column.load_vector();
+  K.solve(u);
+  const double rho = 7900, g = 9.81, H = 1.0, W = 0.1, E = 210e9, nu = 0.3;
+  const double weight = rho * g * W * H * d.thickness;
+  const double Ep     = oedometric(E, nu);
+  const double top    = -rho * g * H * H / (2 * Ep);
+  EXPECT_NEAR(u[column.vertex_dofs(Point<2>(0.05, 1.2))[1]],
+              top,
+              1e-10 * std::abs(top));
+
+  // The reaction: the traction sigma n of the FE stress over the base.
+  const QGauss<1>                  quadrature(3);
+  FEFaceValues<2>                  values(column.mapping(),
+                         column.fe(),
+                         quadrature,
+                         update_gradients | update_normal_vectors |
+                           update_JxW_values);
+  const FEValuesExtractors::Vector displacement(0);
+  const SymmetricTensor<4, 2>      C = elasticity_tensor(s.plane_model, E, nu);
+  std::vector<SymmetricTensor<2, 2>> eps(quadrature.size());
+  Tensor<1, 2>                       reaction;
+  for (const auto &cell : column.dof_handler().active_cell_iterators())
+    for (const auto &face : cell->face_iterators())
+      if (face->at_boundary() && face->boundary_id() == 2) // bottom
+        {
+          values.reinit(cell, face);
+          values[displacement].get_function_symmetric_gradients(u, eps);
+          for (const unsigned int q : values.quadrature_point_indices())
+            reaction += (C * eps[q]) * values.normal_vector(q) * values.JxW(q) *
+                        d.thickness;
+        }
+  EXPECT_NEAR(reaction[1], weight, 1e-10 * weight);
+  EXPECT_NEAR(reaction[0], 0., 1e-10 * weight);
+
+  // Held by contact alone (pinned): the whole weight along its free motion.
+  Component floating(s.components[0], s.plane_model, 0, nullptr, {"bottom"});
+  ASSERT_EQ(floating.free_motion_names(),
+            std::vector<std::string>{"translation along (0, 1)"});
+  EXPECT_NEAR(floating.rigid_load(0)[0], -weight, 1e-12 * weight);
+  // (The condensed nodal forces leave out the pin's share.)
+  const double condensed =
+    floating.free_motions()[0] * floating.reference_load_vector(0);
+  EXPECT_GT(std::abs(condensed + weight), 1e-6 * weight);
+}
+
+// The block of prm/slope.prm under its own weight (prm/slope-weight.prm)
+// instead of a force: statics' N = W cos 20, T = W sin 20 with W = rho g A t
+// in every model, to round-off; with less friction than tan 20 no static
+// equilibrium, and the friction it needs is tan 20.
+TEST(Gravity, BlockOnASlopeUnderItsWeight)
+{
+  const double theta = 20 * M_PI / 180;
+  const double W     = 7900 * 9.81 * (0.1 * 0.05) * 1.0;
+  const auto   read  = [](const double mu) {
+    std::ifstream      in(source_dir + "/prm/slope-weight.prm");
+    std::ostringstream text;
+    text << in.rdbuf();
+    return Scene::read_from_string(replace(text.str(),
+                                           "set friction coefficient = 0.5",
+                                           "set friction coefficient = " +
+                                             std::to_string(mu)),
+                                   source_dir + "/prm/slope-weight.prm");
+  };
+  for (const double mu : {0.5, 1.02 * std::tan(theta)})
+    for (const auto &v : three_ways(read(mu), {"Fn", "Ft"}))
+      {
+        EXPECT_NEAR(v[0], W * std::cos(theta), 1e-10 * W) << "mu = " << mu;
+        EXPECT_NEAR(std::abs(v[1]), W * std::sin(theta), 1e-10 * W)
+          << "mu = " << mu;
+      }
+  for (const double mu : {0.3, 0.98 * std::tan(theta)})
+    {
+      const std::string m = error_of([&] {
+        three_ways(read(mu), {"Fn"});
+      });
+      expect_needs_friction(m, std::tan(theta));
+    }
+}
+
+// The weight as a load of a history: the column and footing weights in a
+// first stage (2 steps), a force on the column's top in a second. The
+// problem is frictionless, so the end state is that of one proportional
+// stage: Fn = W + F in every model.
+TEST(Gravity, WeightInALoadStage)
+{
+  std::ifstream      in(source_dir + "/prm/column.prm");
+  std::ostringstream text;
+  text << in.rdbuf();
+  std::string t = replace(text.str(),
+                          "  set gravity       = 0, -9.81\n",
+                          "  set gravity       = 0, -9.81\n"
+                          "  set load stages   = self, service\n");
+  t             = replace(t,
+              "  set supports           = left-guide, right-guide\n",
+              "  set supports           = left-guide, right-guide\n"
+                          "  set loads              = cap\n"
+                          "  subsection Load cap\n"
+                          "    set face        = top\n"
+                          "    set total force = 2e4\n"
+                          "  end\n");
+  const std::string stages =
+    "subsection Stage self\n"
+    "  set loads      = Column.weight, Footing.weight\n"
+    "  set load steps = 2\n"
+    "end\n"
+    "subsection Stage service\n"
+    "  set loads = Column.cap\n"
+    "end\n";
+  const Scene  s  = Scene::read_from_string(t + stages, "column-stages.prm");
+  const double Fn = 7900 * 9.81 * 0.1 + 2e4;
+  for (const auto &v : three_ways(s, {"Fn"}))
+    EXPECT_NEAR(v[0], Fn, 1e-10 * Fn);
+  // Every load in exactly one stage: the weights too.
+  EXPECT_NE(error_of([&] {
+              Scene::read_from_string(t +
+                                        replace(stages,
+                                                "Column.weight, Footing.weight",
+                                                "Column.weight"),
+                                      "column-stages.prm");
+            }).find("the load <Footing.weight> is in no stage"),
+            std::string::npos);
+}
+
+// What gravity refuses, naming the file and key: a load or support of the
+// user called 'weight', a gravity beyond the range, the weight as a
+// quantity of its own, a zone's modulus, and a force scaling the loads.
+TEST(Gravity, RefusedInput)
+{
+  std::ifstream      in(source_dir + "/prm/column.prm");
+  std::ostringstream text;
+  text << in.rdbuf();
+  const std::string t    = text.str();
+  const auto        fail = [&](const std::string &from, const std::string &to) {
+    return error_of([&] {
+      Scene::read_from_string(replace(t, from, to), "column.prm");
+    });
+  };
+  EXPECT_NE(fail("  set rho                = 7900\n",
+                 "  set rho                = 7900\n"
+                 "  set loads              = weight\n"
+                 "  subsection Load weight\n"
+                 "    set face = top\n"
+                 "  end\n")
+              .find("Scene file <column.prm>: Component Column: load <weight>: "
+                    "with the scene's gravity on"),
+            std::string::npos);
+  EXPECT_NE(
+    fail("set supports           = left-guide, right-guide\n  subsection "
+         "Support left-guide",
+         "set supports           = weight, right-guide\n  subsection "
+         "Support weight")
+      .find("Component Column: support <weight>"),
+    std::string::npos);
+  EXPECT_NE(fail("set gravity       = 0, -9.81", "set gravity = 0, -1e5")
+              .find("Scene file <column.prm>: Scene: gravity (its magnitude) "
+                    "must lie between 0 and 10000"),
+            std::string::npos);
+  EXPECT_NE(fail("set gravity       = 0, -9.81", "set gravity = 0, nan")
+              .find("Scene: gravity"),
+            std::string::npos);
+  EXPECT_NE(fail("set gravity       = 0, -9.81", "set gravity = -9.81")
+              .find("Scene: gravity"),
+            std::string::npos);
+  // Without gravity a load may be called 'weight' (prm/slope.prm's is).
+  EXPECT_EQ(scene("slope").components[0].loads[0].name, "weight");
+  EXPECT_FALSE(scene("slope").components[0].loads[0].is_weight);
+
+  const Scene s = scene("column");
+  EXPECT_NE(error_of([&] {
+              SceneQuantity::parse("Column.weight.force", s);
+            }).find("vary Column.rho"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] {
+              SceneQuantity::parse("Column.body.E", s);
+            }).find("Vary the modulus of the whole body (Column.E)"),
+            std::string::npos);
+  EXPECT_EQ(SceneQuantity::parse("Column.body.rho", s).zone, 0);
+  SceneState state(s);
+  EXPECT_NE(error_of([&] {
+              state.scale_forces_to(s, 5e4, "load");
+            }).find("has gravity"),
+            std::string::npos);
 }

@@ -6,12 +6,16 @@
 #include <fuzzycontact/base/input.h>
 #include <fuzzycontact/fuzzy/fuzzy_parameters.h>
 #include <fuzzycontact/scene/scene.h>
+#include <fuzzycontact/scene/scene_state.h>
 
 #include <deal.II/base/exceptions.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <string>
+#include <vector>
 
 namespace FuzzyContact
 {
@@ -69,6 +73,58 @@ namespace FuzzyContact
           return Input::message_of(e);
         }
       return "";
+    }
+
+    /** The oedometric modulus: sigma_yy / eps_yy when eps_xx = eps_zz = 0. */
+    inline double
+    oedometric(const double E, const double nu)
+    {
+      return E * (1 - nu) / ((1 + nu) * (1 - 2 * nu));
+    }
+
+    /**
+     * The uniaxial state of prm/column.prm at @p state (rollers on every
+     * vertical side, plane strain: eps_xx = 0; the column's zones
+     * horizontal layers of one modulus): sigma_yy(y) = -(the weight above
+     * y per unit area), u_y = int sigma_yy / E' dy from the clamped base.
+     * Returns the contact force, u_y of the footing's top and u_y of the
+     * column's top.
+     */
+    inline std::array<double, 3>
+    column_closed_form(const Scene &s, const SceneState &state)
+    {
+      const double                g       = -s.gravity[1];
+      const ComponentDescription &column  = s.components[0],
+                                 &footing = s.components[1];
+      const double W = column.length(), t = column.thickness;
+      // The column's layers from the top down: each adds the integral of its
+      // stress, -(q h + rho g h^2 / 2), q the pressure of those above.
+      std::vector<std::array<double, 3>> layers; // top, height, density
+      for (unsigned int z = 0; z < column.zones.size(); ++z)
+        {
+          const double lo =
+            std::max(column.zones[z].y_range[0], column.lower_left[1]);
+          const double hi =
+            std::min(column.zones[z].y_range[1], column.upper_right[1]);
+          layers.push_back({{hi, hi - lo, state.zone_densities[0][z]}});
+        }
+      std::sort(layers.begin(), layers.end(), [](const auto &a, const auto &b) {
+        return a[0] > b[0];
+      });
+      double q = 0, column_integral = 0;
+      for (const auto &layer : layers)
+        {
+          column_integral -=
+            q * layer[1] + layer[2] * g * layer[1] * layer[1] / 2;
+          q += layer[2] * g * layer[1];
+        }
+      const double Hb = footing.height(), rho_b = state.zone_densities[1][0];
+      const double Eb =
+        oedometric(state.zone_moduli[1][0], footing.zones[0].poissons_ratio);
+      const double Ec =
+        oedometric(state.zone_moduli[0][0], column.zones[0].poissons_ratio);
+      const double footing_top = -(q * Hb + rho_b * g * Hb * Hb / 2) / Eb;
+      return {{q * W * t, footing_top, footing_top + column_integral / Ec}};
     }
   } // namespace Testing
 } // namespace FuzzyContact

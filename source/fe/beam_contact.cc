@@ -89,7 +89,9 @@ namespace FuzzyContact
     std::optional<TwoBeamContact>
     two_beam_contact(const Scene &scene)
     {
-      if (scene.components.size() != 2 || scene.contact_pairs.size() != 1)
+      // (Beam theory here knows the end load only, not a body's weight.)
+      if (scene.components.size() != 2 || scene.contact_pairs.size() != 1 ||
+          scene.gravity.norm() > 0)
         return {};
       const ContactPairDescription &pair = scene.contact_pairs[0];
       const bool                    faces =

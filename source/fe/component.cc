@@ -181,6 +181,9 @@ namespace FuzzyContact
         zone_moduli_.push_back(zone.youngs_modulus);
         zone_densities_.push_back(zone.density);
       }
+    for (unsigned int l = 0; l < description_.loads.size(); ++l)
+      if (description_.loads[l].is_weight)
+        weight_load_ = l;
     {
       std::unique_ptr<TimerOutput::Scope> scope;
       if (timer != nullptr)
@@ -525,8 +528,9 @@ namespace FuzzyContact
     zone_densities_   = densities;
     matrices_current_ = false;
     // (Loads not yet assembled are assembled at these materials.)
-    if (!displacement_fields_.empty() && loads_assembled_)
-      update_displacement_loads();
+    if ((!displacement_fields_.empty() || weight_load_ >= 0) &&
+        loads_assembled_)
+      update_material_loads();
   }
 
 

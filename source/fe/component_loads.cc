@@ -40,9 +40,10 @@ namespace FuzzyContact
       }
   }
 
-  // The load of each support displacement at the current zone moduli.
+  // The load of each support displacement at the current zone moduli, and
+  // the weight at the current densities.
   void
-  Component::update_displacement_loads() const
+  Component::update_material_loads() const
   {
     unsigned int s = 0;
     load_.reinit(dof_handler_.n_dofs());
@@ -56,8 +57,78 @@ namespace FuzzyContact
                                  displacement_zone_loads_[s][z]);
             ++s;
           }
+        if (description_.loads[l].is_weight)
+          {
+            unit_loads_[l] = 0;
+            for (unsigned int z = 0; z < n_zones(); ++z)
+              unit_loads_[l].add(zone_densities_[z], weight_zone_loads_[z]);
+          }
         load_.add(description_.loads[l].total_force, unit_loads_[l]);
       }
+  }
+
+
+  // w_z = t int_z N^T d dx per zone, condensed (supports and pins left
+  // out) and in full for its resultants along the free motions.
+  void
+  Component::assemble_weight() const
+  {
+    const Tensor<1, 2> d =
+      description_.loads[weight_load_].direction * description_.thickness;
+    const QGauss<2>                      quadrature(fe_.degree + 1);
+    FEValues<2>                          fe_values(*mapping_,
+                          fe_,
+                          quadrature,
+                          update_values | update_JxW_values);
+    const FEValuesExtractors::Vector     displacement(0);
+    const unsigned int                   n = fe_.n_dofs_per_cell();
+    Vector<double>                       cell_f(n);
+    std::vector<types::global_dof_index> dofs(n);
+    weight_zone_loads_.assign(n_zones(), Vector<double>(n_dofs()));
+    std::vector<Vector<double>> full(n_zones(), Vector<double>(n_dofs()));
+    for (const auto &cell : dof_handler_.active_cell_iterators())
+      {
+        fe_values.reinit(cell);
+        cell_f = 0;
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          for (unsigned int i = 0; i < n; ++i)
+            cell_f(i) +=
+              fe_values[displacement].value(i, q) * d * fe_values.JxW(q);
+        cell->get_dof_indices(dofs);
+        const unsigned int z = cell->material_id();
+        constraints_.distribute_local_to_global(cell_f,
+                                                dofs,
+                                                weight_zone_loads_[z]);
+        full[z].add(dofs, cell_f);
+      }
+    weight_zone_resultants_.assign(n_zones(),
+                                   Vector<double>(free_motions_.size()));
+    for (unsigned int z = 0; z < n_zones(); ++z)
+      for (unsigned int j = 0; j < free_motions_.size(); ++j)
+        weight_zone_resultants_[z][j] = free_motions_[j] * full[z];
+  }
+
+
+  int
+  Component::weight_load() const
+  {
+    return weight_load_;
+  }
+
+
+  const std::vector<Vector<double>> &
+  Component::weight_zone_loads() const
+  {
+    ensure_loads();
+    return weight_zone_loads_;
+  }
+
+
+  const std::vector<Vector<double>> &
+  Component::weight_zone_resultants() const
+  {
+    ensure_loads();
+    return weight_zone_resultants_;
   }
 
   const std::vector<std::vector<Vector<double>>> &
@@ -86,7 +157,7 @@ namespace FuzzyContact
     displacement_zone_loads_   = loads;
     displacement_loads_formed_ = true;
     if (loads_assembled_)
-      update_displacement_loads();
+      update_material_loads();
   }
 
   bool
@@ -116,10 +187,10 @@ namespace FuzzyContact
     load_.reinit(dof_handler_.n_dofs());
     for (const EdgeLoad &load : description_.loads)
       {
-        if (load.is_displacement)
+        if (load.is_displacement || load.is_weight)
           {
             unit_loads_.emplace_back(dof_handler_.n_dofs());
-            continue; // update_displacement_loads() forms it
+            continue; // update_material_loads() forms it
           }
         const types::boundary_id id =
           description_.boundary_id(load.face,
@@ -152,7 +223,9 @@ namespace FuzzyContact
               }
         unit_loads_.push_back(std::move(f));
       }
-    update_displacement_loads();
+    if (weight_load_ >= 0)
+      assemble_weight();
+    update_material_loads();
   }
 
   double

@@ -173,7 +173,7 @@ namespace FuzzyContact
       faces.insert(
         description_.boundary_id(face, "Component " + name() + ": face"));
     for (const EdgeLoad &load : description_.loads)
-      if (!load.is_displacement)
+      if (!load.is_displacement && !load.is_weight) // (the weight: no face)
         faces.insert(description_.boundary_id(load.face,
                                               "Component " + name() +
                                                 ", load " + load.name));
@@ -292,6 +292,15 @@ namespace FuzzyContact
     Vector<double> e(free_motions_.size());
     if (e.size() == 0 || description_.loads[l].is_displacement)
       return e;
+    // The weight acts on every DoF, the pins too: its resultant comes from
+    // its zone forces in full (weight_zone_resultants()).
+    if (description_.loads[l].is_weight)
+      {
+        for (unsigned int z = 0; z < n_zones(); ++z)
+          e.add(zone_densities_[z] * reference_load_force(l),
+                weight_zone_resultants()[z]);
+        return e;
+      }
     const Vector<double> f = reference_load_vector(l);
     for (unsigned int j = 0; j < free_motions_.size(); ++j)
       e[j] = free_motions_[j] * f;

@@ -114,6 +114,10 @@ namespace FuzzyContact
           text << (text.str().empty() ? "" : ", ") << s.components[c].name
                << "." << s.components[c].loads[l].name << " displaced by "
                << state.load_forces[c][l] << " m";
+    // Each body's weight: rho g over the body, at the state's densities.
+    if (s.gravity.norm() > 0)
+      text << (text.str().empty() ? "" : ", ") << "gravity (" << s.gravity[0]
+           << ", " << s.gravity[1] << ") m/s^2 (the bodies' weight)";
     if (text.str().empty() || load != 0)
       text << (text.str().empty() ? "" : ", ") << "F = " << load << " N";
     // A load history replaces the proportional load steps.

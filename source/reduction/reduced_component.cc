@@ -175,6 +175,16 @@ namespace FuzzyContact
     LapackErrors::check("Component " + component.name() +
                         ": the static correction");
 
+    // The exact responses to the weight, per zone.
+    if (component.weight_load() >= 0)
+      for (const Vector<double> &w : component.weight_zone_loads())
+        {
+          Vector<double> u = w;
+          u *= component.reference_load_force(component.weight_load());
+          factorisation->solve(u);
+          weight_fields.push_back(std::move(u));
+        }
+
     const unsigned int n_s = X.n();
     K_r.reinit(n_m + n_s, n_m + n_s);
     for (unsigned int i = 0; i < n_m; ++i)
@@ -205,8 +215,10 @@ namespace FuzzyContact
     // rank test below does not take the contact columns for round-off.
     std::vector<const Vector<double> *> loads;
     std::vector<double>                 load_scales;
+    // (Not the weight: it acts on every DoF, see the top of the header.)
     for (unsigned int l = 0; l < component.description().loads.size(); ++l)
-      if (component.unit_load_vector(l).linfty_norm() > 0)
+      if (!component.description().loads[l].is_weight &&
+          component.unit_load_vector(l).linfty_norm() > 0)
         {
           loads.push_back(&component.unit_load_vector(l));
           load_scales.push_back(
@@ -463,6 +475,13 @@ namespace FuzzyContact
   }
 
 
+  const std::vector<Vector<double>> &
+  ReducedComponent::weight_responses() const
+  {
+    return weight_fields;
+  }
+
+
   std::vector<FullMatrix<double>>
   ReducedComponent::zone_stiffnesses() const
   {
@@ -501,11 +520,15 @@ namespace FuzzyContact
     const std::vector<types::global_dof_index> &observed_dofs) const
   {
     ReducedComponentMatrices r;
-    r.stiffness    = K_r;
-    r.gap_operator = project_rows(gap_operator);
+    r.stiffness      = K_r;
+    r.gap_operator   = project_rows(gap_operator);
+    const int weight = component.weight_load();
     for (unsigned int l = 0; l < component.description().loads.size(); ++l)
       {
-        r.loads.push_back(project(component.reference_load_vector(l)));
+        // (The weight's response is carried whole, below.)
+        r.loads.push_back(static_cast<int>(l) == weight
+                            ? Vector<double>(size())
+                            : project(component.reference_load_vector(l)));
         r.reference_forces.push_back(component.reference_load_force(l));
         r.stiffness_proportional.push_back(
           component.description().loads[l].is_displacement);
@@ -527,7 +550,23 @@ namespace FuzzyContact
                                  component.free_motion_names()[j]);
       }
     for (unsigned int l = 0; l < component.description().loads.size(); ++l)
-      r.rigid_loads.push_back(component.rigid_load(l));
+      r.rigid_loads.push_back(static_cast<int>(l) == weight
+                                ? Vector<double>(R.size())
+                                : component.rigid_load(l));
+    r.zone_densities = component.zone_densities();
+    r.weight_load    = weight;
+    for (unsigned int z = 0; z < weight_fields.size(); ++z)
+      {
+        Vector<double> g(gap_operator.m()), u(observed_dofs.size());
+        gap_operator.vmult(g, weight_fields[z]);
+        for (unsigned int i = 0; i < observed_dofs.size(); ++i)
+          u[i] = weight_fields[z][observed_dofs[i]];
+        Vector<double> e = component.weight_zone_resultants()[z];
+        e *= component.reference_load_force(weight);
+        r.weight_gaps.push_back(std::move(g));
+        r.weight_observation.push_back(std::move(u));
+        r.weight_rigid_loads.push_back(std::move(e));
+      }
     return r;
   }
 } // namespace FuzzyContact

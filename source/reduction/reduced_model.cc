@@ -212,6 +212,7 @@ namespace FuzzyContact
         variable[c].matrices = std::move(components[c]);
         compute_blocks(variable[c]);
         load_forces.push_back(variable[c].matrices.reference_forces);
+        densities.push_back(variable[c].matrices.zone_densities);
       }
     collect_free_motions();
     flexibility_         = std::make_shared<Flexibility>(*this);
@@ -286,6 +287,7 @@ namespace FuzzyContact
         if (rank != owner[c])
           variable[c] = std::move(received);
         load_forces.push_back(variable[c].matrices.reference_forces);
+        densities.push_back(variable[c].matrices.zone_densities);
       }
     collect_free_motions();
     flexibility_         = std::make_shared<Flexibility>(*this);
@@ -298,42 +300,6 @@ namespace FuzzyContact
 
 
   void
-  ReducedContactModel::set_load_forces(
-    const std::vector<std::vector<double>> &forces)
-  {
-    AssertThrow(forces.size() == variable.size(),
-                ExcMessage("ReducedContactModel: one list of load forces per "
-                           "component is expected."));
-    for (unsigned int c = 0; c < forces.size(); ++c)
-      {
-        AssertThrow(forces[c].size() == load_forces[c].size(),
-                    ExcMessage("ReducedContactModel: one force per load of "
-                               "each component is expected."));
-        for (const double f : forces[c])
-          AssertThrow(std::isfinite(f),
-                      ExcMessage("ReducedContactModel: load forces must be "
-                                 "finite."));
-      }
-    if (forces == load_forces)
-      return;
-    load_forces = forces;
-    assemble_load_gaps();
-  }
-
-
-  double
-  ReducedContactModel::load_factor(const unsigned int c,
-                                   const unsigned int l) const
-  {
-    // The reduced loads are those of the nominal stiffness; at K = s K_ref
-    // the forces that impose a displacement are s times theirs.
-    const ReducedComponentMatrices &r = variable[c].matrices;
-    return (r.stiffness_proportional[l] ? scales[c] : 1.) * load_forces[c][l] /
-           r.reference_forces[l];
-  }
-
-
-  void
   ReducedContactModel::compute_blocks(Part &part) const
   {
     const unsigned int              m = problem_.g_initial.size();
@@ -343,6 +309,15 @@ namespace FuzzyContact
                      r.loads.size() == r.stiffness_proportional.size();
     for (const Vector<double> &f : r.loads)
       loads_fit = loads_fit && f.size() == k;
+    loads_fit = loads_fit &&
+                (r.weight_load < 0 ||
+                 (static_cast<unsigned int>(r.weight_load) < r.loads.size() &&
+                  r.weight_gaps.size() == r.zone_densities.size() &&
+                  r.weight_observation.size() == r.zone_densities.size()));
+    for (const Vector<double> &g : r.weight_gaps)
+      loads_fit = loads_fit && g.size() == m;
+    for (const Vector<double> &u : r.weight_observation)
+      loads_fit = loads_fit && u.size() == r.observed_dofs.size();
     AssertThrow(r.stiffness.n() == k && r.gap_operator.m() == m &&
                   r.gap_operator.n() == k && loads_fit &&
                   r.observation.m() == r.observed_dofs.size() &&
@@ -403,8 +378,11 @@ namespace FuzzyContact
         part.load_gaps.push_back(std::move(g));
         part.observation_loads.push_back(std::move(u));
       }
-    part.present      = true;
-    part.has_matrices = true;
+    // The weight's exact zone responses as they are.
+    part.weight_gaps        = r.weight_gaps;
+    part.weight_observation = r.weight_observation;
+    part.present            = true;
+    part.has_matrices       = true;
   }
 
 
@@ -412,67 +390,6 @@ namespace FuzzyContact
   ReducedContactModel::flexibility_changed()
   {
     flexibility_->reset();
-    assemble_load_gaps();
-  }
-
-
-  Vector<double>
-  ReducedContactModel::load_gaps(const LoadStage *stage) const
-  {
-    Vector<double> g(problem_.g_initial.size());
-    for (unsigned int c = 0; c < variable.size(); ++c)
-      for (const Part *part : {&variable[c], &fixed[c]})
-        if (part->present)
-          for (unsigned int l = 0; l < part->load_gaps.size(); ++l)
-            {
-              const double factor = load_factor(c, l);
-              if (factor != 0 && (stage == nullptr || stage->ramps(c, l)))
-                g.add(factor / scales[c], part->load_gaps[l]);
-            }
-    return g;
-  }
-
-
-  Vector<double>
-  ReducedContactModel::rigid_load(const LoadStage *stage) const
-  {
-    Vector<double> e(problem_.rigid.size());
-    for (unsigned int c = 0; c < variable.size(); ++c)
-      {
-        const ReducedComponentMatrices &r = variable[c].matrices;
-        for (unsigned int j = 0; j < r.rigid_gaps.n(); ++j)
-          for (unsigned int l = 0; l < r.rigid_loads.size(); ++l)
-            if (stage == nullptr || stage->ramps(c, l))
-              e[first_motion[c] + j] +=
-                load_forces[c][l] / r.reference_forces[l] * r.rigid_loads[l][j];
-      }
-    return e;
-  }
-
-
-  void
-  ReducedContactModel::assemble_load_gaps()
-  {
-    problem_.g_load     = load_gaps(nullptr);
-    problem_.rigid_load = rigid_load(nullptr);
-    problem_.stages.clear();
-    for (const LoadStage &stage : load_stages)
-      problem_.stages.push_back(GapLoadStage{load_gaps(&stage),
-                                             stage.n_load_steps,
-                                             rigid_load(&stage)});
-    problem_.check();
-  }
-
-
-  void
-  ReducedContactModel::set_load_stages(const std::vector<LoadStage> &stages)
-  {
-    for (const LoadStage &stage : stages)
-      for (const auto &[c, l] : stage.loads)
-        AssertThrow(c < load_forces.size() && l < load_forces[c].size(),
-                    ExcMessage("ReducedContactModel: stage " + stage.name +
-                               " names a load the components do not have."));
-    load_stages = stages;
     assemble_load_gaps();
   }
 
@@ -643,6 +560,12 @@ namespace FuzzyContact
                     u += part->observation_flexibility(row, j) * state.p[j];
               }
           u /= scales[c];
+          // The weight's exact response.
+          const std::vector<double> a = weight_coefficients(c);
+          for (unsigned int z = 0; z < a.size(); ++z)
+            for (const Part *part : {&variable[c], &fixed[c]})
+              if (part->present && z < part->weight_observation.size())
+                u += load_factor * a[z] * part->weight_observation[z][row];
           const ReducedComponentMatrices &r = variable[c].matrices;
           for (unsigned int j = 0; j < r.rigid_observation.n(); ++j)
             u += r.rigid_observation(row, j) * state.rigid[first_motion[c] + j];

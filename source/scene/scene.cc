@@ -113,7 +113,7 @@ namespace FuzzyContact
     {
       for (EdgeLoad &load : component.loads)
         {
-          if (load.is_displacement)
+          if (load.is_displacement || load.is_weight)
             continue;
           const std::string lwhere = where + ", load " + load.name;
           prm.enter_subsection("Load " + load.name);
@@ -226,6 +226,43 @@ namespace FuzzyContact
     }
 
 
+    // The component's own weight, a load called "weight" listed last, if
+    // gravity is on (EdgeLoad::is_weight).
+    void
+    add_weight(ComponentDescription &component,
+               const Tensor<1, 2>   &gravity,
+               const std::string    &where)
+    {
+      component.loads.erase(std::remove_if(component.loads.begin(),
+                                           component.loads.end(),
+                                           [](const EdgeLoad &load) {
+                                             return load.is_weight;
+                                           }),
+                            component.loads.end());
+      if (gravity.norm() == 0)
+        return;
+      for (const EdgeLoad &load : component.loads)
+        AssertThrow(load.name != "weight",
+                    ExcMessage(where + ": " +
+                               (load.is_displacement ? "support" : "load") +
+                               " <weight>: with the scene's gravity on, "
+                               "every component has a load called "
+                               "'weight' (its own weight); give this " +
+                               (load.is_displacement ? "support" : "load") +
+                               " another name."));
+      for (const Support &support : component.supports)
+        AssertThrow(support.name != "weight",
+                    ExcMessage(where +
+                               ": support <weight>: with the scene's "
+                               "gravity on, every component has a load "
+                               "called 'weight' (its own weight); give this "
+                               "support another name."));
+      EdgeLoad weight{"weight", "", gravity.norm(), gravity / gravity.norm()};
+      weight.is_weight = true;
+      component.loads.push_back(weight);
+    }
+
+
     // The geometry of a component: a mesh file, or a rectangle's corners and
     // subdivisions.
     void
@@ -282,7 +319,8 @@ namespace FuzzyContact
     void
     parse_component(ParameterHandler     &prm,
                     ComponentDescription &component,
-                    const std::string    &scene_file)
+                    const std::string    &scene_file,
+                    const Tensor<1, 2>   &gravity)
     {
       const std::string where = "Component " + component.name;
       prm.enter_subsection(component_section(component.name));
@@ -314,6 +352,7 @@ namespace FuzzyContact
       parse_zones(prm, component, where, E, nu, rho);
       parse_loads(prm, component, where);
       parse_supports(prm, component, where);
+      add_weight(component, gravity, where);
       prm.leave_subsection();
     }
 
@@ -445,10 +484,15 @@ namespace FuzzyContact
     plane_model = prm.get("plane model") == "plane strain"
                     ? PlaneModel::plane_strain
                     : PlaneModel::plane_stress;
+    const std::vector<double> g =
+      Input::to_doubles(prm.get("gravity"), "Scene: gravity", 2);
+    gravity[0] = g[0];
+    gravity[1] = g[1];
     prm.leave_subsection();
+    SceneLimits::gravity(gravity, "Scene: gravity");
 
     for (ComponentDescription &component : components)
-      parse_component(prm, component, source_file);
+      parse_component(prm, component, source_file, gravity);
     for (ContactPairDescription &pair : contact_pairs)
       parse_contact_pair(prm, pair);
     parse_load_stages(prm);

@@ -57,8 +57,8 @@ namespace FuzzyContact
     {
       for (const EdgeLoad &load : component.loads)
         {
-          if (load.is_displacement)
-            continue; // declared as its support
+          if (load.is_displacement || load.is_weight)
+            continue; // declared as its support, or by the scene's gravity
           prm.enter_subsection("Load " + load.name);
           prm.declare_entry("face",
                             "right",
@@ -273,6 +273,12 @@ namespace FuzzyContact
                         Patterns::Anything(),
                         "Comma-separated names of the contact pairs; each "
                         "has a subsection 'Contact <name>'.");
+      prm.declare_entry("gravity",
+                        "0, 0",
+                        Patterns::Anything(),
+                        "Acceleration of gravity [m/s^2], x, y (e.g. 0, "
+                        "-9.81): every component then carries its own "
+                        "weight, a load called 'weight'. 0, 0: no weight.");
       prm.declare_entry("load stages",
                         "",
                         Patterns::Anything(),

@@ -73,6 +73,21 @@ namespace FuzzyContact
     }
 
 
+    Tensor<1, 2>
+    gravity(const Tensor<1, 2> &g, const std::string &what)
+    {
+      for (unsigned int d = 0; d < 2; ++d)
+        Input::finite(g[d], what);
+      Input::in_range(g.norm(),
+                      0,
+                      max_gravity,
+                      what + " (its magnitude)",
+                      "an acceleration in m/s^2, up to about 1000 times the "
+                      "Earth's");
+      return g;
+    }
+
+
     namespace
     {
       void
@@ -130,9 +145,10 @@ namespace FuzzyContact
                             "elements");
           }
         for (const EdgeLoad &load : component.loads)
-          force(load.total_force,
-                where + ", load " + load.name +
-                  (load.is_pressure ? ": pressure" : ": total force"));
+          if (!load.is_weight) // (the scene's gravity, checked on its own)
+            force(load.total_force,
+                  where + ", load " + load.name +
+                    (load.is_pressure ? ": pressure" : ": total force"));
         for (const Support &support : component.supports)
           for (unsigned int d = 0; d < 2; ++d)
             Input::in_range(support.displacement[d],
@@ -148,6 +164,7 @@ namespace FuzzyContact
     void
     check_ranges(const Scene &scene)
     {
+      gravity(scene.gravity, "Scene: gravity");
       double largest = 0;
       for (const ComponentDescription &component : scene.components)
         {

@@ -192,6 +192,15 @@ namespace FuzzyContact
           if (component.loads[l].name == parts[1] &&
               component.loads[l].is_displacement == (what == "displacement"))
             {
+              // The weight follows the densities (and the scene's gravity).
+              AssertThrow(!component.loads[l].is_weight,
+                          ExcMessage(where + ": the weight of component " +
+                                     component.name +
+                                     " is not a quantity of its own: vary " +
+                                     component.name +
+                                     ".rho (or the density "
+                                     "of one of its zones), which scales "
+                                     "its weight."));
               q.kind = Kind::load;
               q.load = l;
               return q;
@@ -221,14 +230,26 @@ namespace FuzzyContact
     // vectors do not follow (yet).
     for (const EdgeLoad &load : component.loads)
       AssertThrow(what != "E" || parts.size() != 3 || !load.is_displacement,
-                  ExcMessage(where + ": component " + component.name +
-                             " has a prescribed displacement (support " +
-                             load.name +
-                             "), whose forces depend on its zone moduli; "
-                             "the modulus of one of its zones cannot vary "
-                             "yet. Vary the modulus of the whole body (" +
-                             component.name +
-                             ".E), or drive this one by a force."));
+                  ExcMessage(
+                    where + ": component " + component.name +
+                    " has a prescribed displacement (support " + load.name +
+                    "), whose forces depend on its zone moduli; "
+                    "the modulus of one of its zones cannot vary "
+                    "yet. Vary the modulus of the whole body (" +
+                    component.name + ".E), or drive this one by a force."));
+    // The weight's exact response K^{-1} w of a body whose zone moduli
+    // change would need a new factorisation per state, which the
+    // re-analysed reduced models do not make.
+    AssertThrow(what != "E" || parts.size() != 3 || scene.gravity.norm() == 0,
+                ExcMessage(where +
+                           ": the scene has gravity, and the "
+                           "response to the weight of component " +
+                           component.name +
+                           " depends on its zone moduli in a way the "
+                           "re-analysed reduced models do not follow; the "
+                           "modulus of one of its zones cannot vary. Vary "
+                           "the modulus of the whole body (" +
+                           component.name + ".E)."));
     if (parts.size() == 3)
       {
         for (unsigned int z = 0; z < component.zones.size(); ++z)
@@ -252,6 +273,13 @@ namespace FuzzyContact
   SceneQuantity::is_material() const
   {
     return kind == Kind::youngs_modulus || kind == Kind::density;
+  }
+
+
+  bool
+  SceneQuantity::reshapes_stiffness() const
+  {
+    return kind == Kind::youngs_modulus && zone >= 0;
   }
 
 

@@ -56,7 +56,8 @@ namespace FuzzyContact
     double total = 0;
     for (unsigned int c = 0; c < scene.components.size(); ++c)
       for (unsigned int l = 0; l < scene.components[c].loads.size(); ++l)
-        if (!scene.components[c].loads[l].is_displacement)
+        if (!scene.components[c].loads[l].is_displacement &&
+            !scene.components[c].loads[l].is_weight)
           total += std::abs(load_forces[c][l]);
     return total;
   }
@@ -76,6 +77,13 @@ namespace FuzzyContact
                                c.name + ", support " + l.name +
                                "), which a force cannot scale; set " + key +
                                " = scene."));
+    // A force cannot scale a body's weight either: its density can.
+    AssertThrow(scene.gravity.norm() == 0,
+                ExcMessage(
+                  key + " = " + std::to_string(load) + ": scene " + scene.name +
+                  " has gravity (the weight of every component), "
+                  "which a force cannot scale; set " +
+                  key + " = scene (a density scales a body's weight)."));
     const double declared = total_load();
     AssertThrow(declared > 0 || load == 0,
                 ExcMessage("Scene " + scene.name +

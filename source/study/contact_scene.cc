@@ -115,13 +115,16 @@ namespace FuzzyContact
                   state.zone_densities.size() == owned.size(),
                 ExcMessage("ContactScene: the state is not one of this "
                            "scene (wrong number of components)."));
+    // (The stiffness does not depend on the densities: its factorisation
+    // stays when they alone change.)
     for (unsigned int c = 0; c < owned.size(); ++c)
       if (state.zone_moduli[c] != owned[c]->zone_moduli() ||
           state.zone_densities[c] != owned[c]->zone_densities())
         {
+          if (state.zone_moduli[c] != owned[c]->zone_moduli())
+            factorisations[c].reset();
           owned[c]->set_zone_materials(state.zone_moduli[c],
                                        state.zone_densities[c]);
-          factorisations[c].reset();
         }
   }
 
@@ -132,8 +135,12 @@ namespace FuzzyContact
     AssertIndexRange(c, owned.size());
     std::vector<types::global_dof_index> dofs = interface_->contact_dofs(c);
     const Component                     &component = *owned[c];
+    // (Not the weight's: it acts on every DoF, and its response is carried
+    // whole, ReducedComponentMatrices::weight_gaps.)
     for (unsigned int l = 0; l < component.description().loads.size(); ++l)
       {
+        if (component.description().loads[l].is_weight)
+          continue;
         const Vector<double> &f = component.unit_load_vector(l);
         for (types::global_dof_index d = 0; d < f.size(); ++d)
           if (f[d] != 0)

@@ -101,14 +101,17 @@ namespace FuzzyContact
                            "contact pair."));
     Observations::check(output_names, scene);
 
-    // A parameter that cannot change the static answer is not varied.
+    // A parameter that cannot change the static answer is not varied: a
+    // density, unless gravity makes it scale its zone's weight.
     std::vector<VaryingQuantity> varying;
     for (const FuzzyParameter &p : fuzzy.parameters())
       {
         inert_parameters.push_back(
-          p.quantity.kind == SceneQuantity::Kind::density
+          p.quantity.kind == SceneQuantity::Kind::density &&
+              scene.gravity.norm() == 0
             ? "a density: the contact problem is static, its answer "
-              "depends on the stiffness and the loads only"
+              "depends on the stiffness and the loads only (the scene has "
+              "no gravity)"
             : "");
         if (inert_parameters.back().empty())
           varying.push_back({p.quantity, p.number.alpha_cut(0)});
@@ -200,7 +203,7 @@ namespace FuzzyContact
     std::string       names;
     for (const VaryingQuantity &v : varying)
       {
-        if (v.quantity.zone >= 0)
+        if (v.quantity.reshapes_stiffness())
           needed[v.quantity.component] = true;
         names += (names.empty() ? "" : ", ") + v.quantity.name;
       }

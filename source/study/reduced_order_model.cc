@@ -53,7 +53,16 @@ namespace FuzzyContact
       part.rigid_loads            = r.rigid_loads;
       part.rigid_observation      = r.rigid_observation;
       part.motion_names           = r.motion_names;
+      part.zone_densities         = r.zone_densities;
       part.observation = block(r.observation, 0, r.observation.m(), begin, n);
+      // The weight's exact responses, in the first part only.
+      if (begin == 0)
+        {
+          part.weight_load        = r.weight_load;
+          part.weight_gaps        = r.weight_gaps;
+          part.weight_observation = r.weight_observation;
+          part.weight_rigid_loads = r.weight_rigid_loads;
+        }
       return part;
     }
 
@@ -130,8 +139,10 @@ namespace FuzzyContact
                              " is not at the scene's materials; a reduced "
                              "model is built at the nominal state."));
 
-    // Which components need a reanalysis: those with a varying material
-    // quantity of a single zone.
+    // Which components need a reanalysis: those with a varying modulus of
+    // a single zone (a density changes no static stiffness: with gravity,
+    // the weight's zone responses follow it exactly).
+    const bool gravity = bodies.scene().gravity.norm() > 0;
     for (unsigned int c = 0; c < n_c; ++c)
       {
         auto m               = std::make_unique<ComponentModel>();
@@ -141,8 +152,16 @@ namespace FuzzyContact
           if (v.quantity.is_material() && v.quantity.component == c)
             {
               m->quantities.push_back(v.quantity);
-              m->hptp = m->hptp || v.quantity.zone >= 0;
+              m->hptp = m->hptp || v.quantity.reshapes_stiffness();
             }
+        // The weight's exact response K^{-1} w would change with a
+        // re-analysed stiffness (SceneQuantity::parse() refuses this).
+        AssertThrow(!m->hptp || !gravity,
+                    ExcMessage("ReducedOrderModel: component " +
+                               bodies.component(c).name() +
+                               " carries its weight (the scene has gravity), "
+                               "whose response the reanalysis of its zone "
+                               "moduli does not follow."));
         m->modes = modes[c];
         models.push_back(std::move(m));
       }
@@ -204,32 +223,6 @@ namespace FuzzyContact
                                 columns(models[c]->nominal_matrices,
                                         models[c]->n_modes,
                                         models[c]->n_corrections));
-  }
-
-
-  std::vector<unsigned int>
-  ReducedOrderModel::builders(const unsigned int                  n_components,
-                              const std::vector<VaryingQuantity> &varying,
-                              const MPI_Comm                      comm)
-  {
-    // (MPI_COMM_SELF, or a program that did not initialise MPI)
-    const unsigned int n_ranks = Utilities::MPI::job_supports_mpi()
-                                   ? Utilities::MPI::n_mpi_processes(comm)
-                                   : 1;
-    std::vector<bool>  reanalysed(n_components, false);
-    for (const VaryingQuantity &v : varying)
-      if (v.quantity.is_material() && v.quantity.zone >= 0)
-        reanalysed[v.quantity.component] = true;
-    const bool any =
-      std::find(reanalysed.begin(), reanalysed.end(), true) != reanalysed.end();
-    std::vector<unsigned int> owner(n_components, 0);
-    unsigned int              next = 0;
-    for (unsigned int c = 0; c < n_components && n_ranks > 1; ++c)
-      if (!any)
-        owner[c] = c % n_ranks;
-      else if (!reanalysed[c])
-        owner[c] = 1 + next++ % (n_ranks - 1);
-    return owner;
   }
 
 
@@ -522,16 +515,10 @@ namespace FuzzyContact
     r.rigid_loads            = m.nominal_matrices.rigid_loads;
     r.rigid_observation      = m.nominal_matrices.rigid_observation;
     r.motion_names           = m.nominal_matrices.motion_names;
+    r.zone_densities         = m.nominal_matrices.zone_densities;
     r.observed_dofs          = m.nominal_matrices.observed_dofs;
     r.observation            = on_basis(m.O_T, m.O_psi);
     return r;
-  }
-
-
-  std::string
-  ReducedOrderModel::name() const
-  {
-    return "reduced (" + solver->name() + ")";
   }
 
 
@@ -557,77 +544,24 @@ namespace FuzzyContact
             continue;
           }
         // Moduli that are the nominal ones times one factor scale the
-        // stiffness exactly; densities then do not change the static model
-        // as long as they keep their proportions (they leave the modes'
-        // span alone).
+        // stiffness exactly. Densities do not change the static stiffness
+        // (nor the span of the modes it was reduced with); with gravity the
+        // weight follows them through its exact zone responses.
         scales[c] = common_factor(state.zone_moduli[c], m.nominal_moduli);
-        AssertThrow(scales[c] > 0 && common_factor(state.zone_densities[c],
-                                                   m.nominal_densities) > 0,
+        AssertThrow(scales[c] > 0,
                     ExcMessage("The reduced model of component " +
                                bodies.component(c).name() +
                                " has no reanalysis: it represents changes of "
-                               "the moduli and densities of all its zones by "
-                               "one factor only, but the state to solve "
-                               "changes its zones differently."));
+                               "the moduli of all its zones by one factor "
+                               "only, but the state to solve changes its "
+                               "zones differently."));
       }
     reduced->set_stiffness_scales(scales);
+    reduced->set_zone_densities(state.zone_densities);
     reduced->set_load_forces(state.load_forces);
     ContactProblem &problem = reduced->problem();
     problem.g_initial       = interface.initial_gaps(state.gap_offsets);
     problem.mu = interface.friction_coefficients(state.friction_coefficients);
-  }
-
-
-  ContactSolution
-  ReducedOrderModel::solve()
-  {
-    return solve(*solver, label);
-  }
-
-
-  ContactSolution
-  ReducedOrderModel::solve(const ContactSolver &contact_solver,
-                           const std::string   &what)
-  {
-    const std::string  name = what.empty() ? contact_solver.name() : what;
-    Timer              clock;
-    const ContactState state =
-      contact_solver.solve(reduced->problem(), 1., n_load_steps, name);
-    ContactSolution s = reduced->solution(state, 1., name);
-    s.n_load_steps    = n_load_steps;
-    if (!reduced->problem().stages.empty())
-      {
-        s.n_load_steps = 0;
-        for (const GapLoadStage &stage : reduced->problem().stages)
-          s.n_load_steps += stage.n_steps;
-      }
-    s.time = clock.wall_time();
-    return s;
-  }
-
-
-  void
-  ReducedOrderModel::set_contact_solver(std::unique_ptr<ContactSolver> s,
-                                        const std::string             &what)
-  {
-    AssertThrow(s != nullptr, ExcMessage("ReducedOrderModel: no solver."));
-    solver = std::move(s);
-    label  = what;
-  }
-
-
-  void
-  ReducedOrderModel::set_n_load_steps(const unsigned int n)
-  {
-    AssertThrow(n >= 1, ExcMessage("load steps must be at least 1."));
-    n_load_steps = n;
-  }
-
-
-  const ContactProblem &
-  ReducedOrderModel::problem() const
-  {
-    return reduced->problem();
   }
 
 
@@ -703,8 +637,20 @@ namespace FuzzyContact
                 out << ")";
               }
             else
-              out << ": exact scaling of the stiffness"
-                  << (m.n_modes > 0 ? " (modes unchanged)" : "");
+              {
+                // (A density enters through the weight alone.)
+                bool moduli = false, densities = false;
+                for (const SceneQuantity &q : m.quantities)
+                  (q.kind == SceneQuantity::Kind::density ? densities
+                                                          : moduli) = true;
+                if (moduli)
+                  out << ": exact scaling of the stiffness"
+                      << (m.n_modes > 0 ? " (modes unchanged)" : "");
+                if (densities)
+                  out << (moduli ? "; " : ": ")
+                      << "the weight's exact zone responses, times the "
+                         "densities";
+              }
           }
         out << "\n";
       }
@@ -728,6 +674,10 @@ namespace FuzzyContact
                                " was built on another MPI rank; its "
                                "displacement field is not available here."));
         models[c]->reduced->expand(q[c], u[c]);
+        // The weight's exact response.
+        const std::vector<double> a = reduced->weight_coefficients(c);
+        for (unsigned int z = 0; z < a.size(); ++z)
+          u[c].add(a[z], models[c]->reduced->weight_responses()[z]);
       }
     // The free motions of the bodies held by contact alone.
     unsigned int first = 0;

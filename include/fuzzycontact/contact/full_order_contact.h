@@ -32,6 +32,9 @@
 //    zone moduli by one factor s (K_c = s K_c,ref, so K_c^{-1} =
 //    K_c,ref^{-1} / s): a change of E of a whole body costs no new
 //    factorisation;
+//  - the response to a body's weight (EdgeLoad::is_weight) is kept per
+//    zone, K_c,ref^{-1} w_z at unit density, and combined with the current
+//    densities: a change of density costs no back-substitution either;
 //  - the statuses of the previous solve, as the start of the next one, if
 //    warm starts are switched on (the answer does not depend on the start).
 // Any other change of a component's moduli triggers a new factorisation.
@@ -174,6 +177,12 @@ namespace FuzzyContact
     /** Factorises what changed. */
     void
     update_factorizations();
+    /**
+     * The weight's response at component c's current densities, from its
+     * zone responses (if they changed since).
+     */
+    void
+    update_weight_response(const unsigned int c);
     /** Makes W's column j available. */
     void
     prepare_column(const unsigned int j);
@@ -254,10 +263,14 @@ namespace FuzzyContact
     // far.
     struct Factorized
     {
-      std::shared_ptr<const SparseCholesky>        inverse;
-      std::vector<double>                          moduli;
-      double                                       scale = 1;
-      std::vector<Vector<double>>                  load_responses;
+      std::shared_ptr<const SparseCholesky> inverse;
+      std::vector<double>                   moduli;
+      double                                scale = 1;
+      std::vector<Vector<double>>           load_responses;
+      // The weight's: K_ref^{-1} w_z per zone at unit density and the
+      // reference force, and the densities its load response is at.
+      std::vector<Vector<double>>                  weight_responses;
+      std::vector<double>                          densities;
       std::vector<std::unique_ptr<Vector<double>>> columns;
       // K_c,ref^{-1} C_c^T e_j at the observed DoFs, per column j.
       std::vector<std::vector<double>> observed_columns;

@@ -22,6 +22,13 @@
 // needs more force for the same displacement); set_zone_materials() updates
 // them.
 //
+// The body's own weight (a scene with gravity g, EdgeLoad::is_weight) is
+// rho g integrated over the body: per zone, w_z = t int_z N^T d dx at unit
+// density along d = g / |g|, and the weight's nodal forces are |g| sum_z
+// rho_z w_z; set_zone_materials() updates them with the densities, as it
+// updates the forces of prescribed displacements with the moduli. It acts
+// on every DoF (no face).
+//
 // A body whose clamps and supports leave rigid-body motions free (a body
 // held by contact alone: a block resting on a slope, a roller under a
 // force) has a singular stiffness. Built for a contact problem (with its
@@ -200,6 +207,27 @@ namespace FuzzyContact
     set_displacement_zone_loads(
       const std::vector<std::vector<Vector<double>>> &loads);
 
+    /**
+     * The index of the component's weight among its loads
+     * (EdgeLoad::is_weight), or -1 if the scene has no gravity.
+     */
+    int
+    weight_load() const;
+    /**
+     * Per zone z: the weight's nodal forces at unit density and |g| = 1,
+     * w_z = t int_z N^T d dx along the direction d of gravity (the DoFs
+     * that supports and pins hold left out). Empty without gravity.
+     */
+    const std::vector<Vector<double>> &
+    weight_zone_loads() const;
+    /**
+     * Per zone z: the resultant of w_z along each free motion R_j, t int_z
+     * d . R_j dx, with the pinned DoFs' share that w_z leaves out (see
+     * rigid_load()).
+     */
+    const std::vector<Vector<double>> &
+    weight_zone_resultants() const;
+
     /** Nodal forces of load @p l for a total force of 1 N. */
     const Vector<double> &
     unit_load_vector(const unsigned int l) const;
@@ -287,7 +315,8 @@ namespace FuzzyContact
     pinned_dofs() const;
     /**
      * R^T f_l: the resultant of load @p l at its reference force along each
-     * free motion.
+     * free motion. For the weight, the whole of it: the pinned DoFs' share
+     * too, which the condensed load vector leaves out.
      */
     Vector<double>
     rigid_load(const unsigned int l) const;
@@ -304,8 +333,13 @@ namespace FuzzyContact
       const unsigned int                          z,
       const FullMatrix<double>                   &cell_k,
       const std::vector<types::global_dof_index> &dofs) const;
+    // The loads of prescribed displacements at the current zone moduli,
+    // the weight at the current densities, and load_.
     void
-    update_displacement_loads() const;
+    update_material_loads() const;
+    // The weight's zone forces and their resultants along the free motions.
+    void
+    assemble_weight() const;
     /** DoFs, supports, and pins if @p contact_faces are given. */
     void
     setup_dofs(const std::vector<std::string> &contact_faces);
@@ -356,6 +390,10 @@ namespace FuzzyContact
     // Whether they are formed (by the assembly, or given).
     mutable bool      displacement_loads_formed_ = false;
     std::vector<bool> prescribed_;
+    // The weight (see weight_zone_loads()), assembled with the loads.
+    int                                 weight_load_ = -1;
+    mutable std::vector<Vector<double>> weight_zone_loads_;
+    mutable std::vector<Vector<double>> weight_zone_resultants_;
     // A pinned body's free motions, their names and its pins.
     std::vector<Vector<double>>          free_motions_;
     std::vector<std::string>             free_motion_names_;

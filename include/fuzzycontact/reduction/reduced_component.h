@@ -22,6 +22,13 @@
 // not supported on B and the expansion V q each cost one back-substitution
 // with the factorisation, and only the Galerkin zone correction (which
 // needs V^T K_z V of a multi-zone component) forms all of V, transiently.
+//
+// A body's weight acts on every DoF: it has no column in E (B would be
+// every DoF). Its exact static response K^{-1} w_z per zone, one
+// back-substitution each, is carried beside the basis instead
+// (ReducedComponentMatrices::weight_gaps): the contact forces' part of the
+// displacement, V K_r^{-1} C_r^T p, stays exact by the static correction,
+// and so does the whole.
 
 #ifndef fuzzycontact_reduction_reduced_component_h
 #define fuzzycontact_reduction_reduced_component_h
@@ -94,6 +101,21 @@ namespace FuzzyContact
     std::vector<Vector<double>> rigid_loads;
     FullMatrix<double>          rigid_observation;
     std::vector<std::string>    motion_names;
+    /**
+     * The body's weight (EdgeLoad::is_weight), load number weight_load
+     * (-1: none). It acts on every DoF, so the basis does not carry it
+     * (loads[weight_load] and rigid_loads[weight_load] are zero): its exact
+     * static response does, per zone z at unit density and the load's
+     * reference force: the gaps C_c K^{-1} w_z, the rows of K^{-1} w_z at
+     * the observed DoFs, and the resultant of w_z along the free motions.
+     * The response to the weight is sum_z rho_z times these, with the zone
+     * densities rho_z (zone_densities: those the matrices were built at).
+     */
+    int                         weight_load = -1;
+    std::vector<Vector<double>> weight_gaps;
+    std::vector<Vector<double>> weight_observation;
+    std::vector<Vector<double>> weight_rigid_loads;
+    std::vector<double>         zone_densities;
 
     /** For Utilities::MPI::broadcast and other serialisation. */
     template <class Archive>
@@ -101,8 +123,9 @@ namespace FuzzyContact
     serialize(Archive &archive, const unsigned int)
     {
       archive &stiffness &gap_operator &loads &reference_forces
-        &stiffness_proportional &observed_dofs &observation &rigid_gaps
-          &rigid_loads &rigid_observation &motion_names;
+        &stiffness_proportional &observed_dofs &observation &rigid_gaps &
+          rigid_loads &rigid_observation &motion_names &weight_load &weight_gaps
+            &weight_observation &weight_rigid_loads &zone_densities;
     }
   };
 
@@ -164,6 +187,15 @@ namespace FuzzyContact
     expand(const Vector<double> &q, Vector<double> &u) const;
 
     /**
+     * The exact static responses to the component's weight per zone,
+     * K^{-1} w_z at unit density and the weight's reference force (empty
+     * without gravity): back-substitutions with the shared factorisation,
+     * made once.
+     */
+    const std::vector<Vector<double>> &
+    weight_responses() const;
+
+    /**
      * The reduced matrices of this component for the gap operator block
      * @p gap_operator (C_c of the contact interface), observing
      * @p observed_dofs.
@@ -202,6 +234,8 @@ namespace FuzzyContact
     FullMatrix<double> E_B, R, X;
     FullMatrix<double> V_B;
     FullMatrix<double> K_r;
+    // K^{-1} w_z per zone (see weight_responses()).
+    std::vector<Vector<double>> weight_fields;
   };
 } // namespace FuzzyContact
 

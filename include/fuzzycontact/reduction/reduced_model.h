@@ -137,6 +137,24 @@ namespace FuzzyContact
     set_stiffness_scales(const std::vector<double> &scales);
 
     /**
+     * The zone densities of every component (zone_densities[c][z]; at
+     * first those its matrices were built at): a body's weight, carried by
+     * its exact zone responses (ReducedComponentMatrices::weight_gaps),
+     * becomes sum_z rho_z times them. Nothing else depends on them (the
+     * problem is static). Exact, O(rows) per zone.
+     */
+    void
+    set_zone_densities(const std::vector<std::vector<double>> &densities);
+
+    /**
+     * The factor of each of component @p c's zone responses to its weight
+     * (ReducedComponentMatrices::weight_gaps) in its displacement at load
+     * factor 1: rho_z (F / F_ref) / s_c; empty without a weight.
+     */
+    std::vector<double>
+    weight_coefficients(const unsigned int c) const;
+
+    /**
      * Replaces the reduced matrices of component @p c (for instance those
      * of a reanalysed basis) and rebuilds its blocks; the component's scale
      * is reset to 1.
@@ -199,6 +217,9 @@ namespace FuzzyContact
       std::vector<Vector<double>> load_gaps;
       FullMatrix<double>          observation_flexibility;
       std::vector<Vector<double>> observation_loads;
+      // The weight's zone responses at the gaps and the observed DoFs
+      // (ReducedComponentMatrices::weight_gaps, weight_observation).
+      std::vector<Vector<double>> weight_gaps, weight_observation;
       bool                        present = false;
       // False for blocks formed on another MPI rank: matrices has its
       // reference forces and observed DoFs only, and factor is empty.
@@ -215,9 +236,11 @@ namespace FuzzyContact
       {
         ar &matrices.reference_forces &matrices.stiffness_proportional &matrices
           .observed_dofs &matrices.rigid_gaps &matrices.rigid_loads &matrices
-          .rigid_observation                                        &matrices
-          .motion_names &low_rank &flexibility &U &diagonal &load_gaps
-            &observation_flexibility &observation_loads &present;
+          .rigid_observation &matrices.motion_names &matrices
+          .weight_load &matrices.weight_rigid_loads &matrices
+          .zone_densities &low_rank &flexibility &U &diagonal &load_gaps
+            &observation_flexibility &observation_loads &weight_gaps
+              &weight_observation &present;
       }
     };
     class Flexibility;
@@ -246,11 +269,15 @@ namespace FuzzyContact
     // F_l / F_ref,l of load l of component c.
     double
     load_factor(const unsigned int c, const unsigned int l) const;
+    // Whether @p stage ramps component c's weight (any stage: nullptr).
+    bool
+    weight_in(const unsigned int c, const LoadStage *stage) const;
 
     std::vector<Part> variable, fixed;
     // The first free motion of each component in the problem's.
     std::vector<unsigned int>        first_motion;
     std::vector<double>              scales;
+    std::vector<std::vector<double>> densities;
     std::vector<std::vector<double>> load_forces;
     std::vector<LoadStage>           load_stages;
     std::shared_ptr<Flexibility>     flexibility_;

@@ -125,6 +125,14 @@ namespace FuzzyContact
      * those that impose it, -K_fp u_p (see Component).
      */
     bool is_displacement = false;
+    /**
+     * True for the body's own weight (the scene adds one, called "weight",
+     * to every component when its `gravity` is not zero): no face;
+     * total_force is the acceleration's magnitude |g| [m/s^2] and
+     * direction g / |g|, and the nodal forces are rho g integrated over the
+     * body, per zone with the zone's density (see Component).
+     */
+    bool is_weight = false;
   };
 
   /**
@@ -299,6 +307,12 @@ namespace FuzzyContact
     PlaneModel                          plane_model = PlaneModel::plane_stress;
     std::vector<ComponentDescription>   components;
     std::vector<ContactPairDescription> contact_pairs;
+    /**
+     * The acceleration of gravity [m/s^2] (scene key `gravity`); zero: no
+     * body weight. Otherwise every component has a load called "weight"
+     * (EdgeLoad::is_weight), listed last.
+     */
+    Tensor<1, 2> gravity;
     /**
      * The load history; empty: every load applied proportionally in one
      * stage (the step program's `load steps`). When given, every load of

@@ -25,9 +25,11 @@ namespace FuzzyContact
     constexpr double min_density = 1e-1, max_density = 1e5;
     constexpr double min_poissons_ratio = -0.99, max_poissons_ratio = 0.49;
     constexpr double min_length = 1e-6, max_length = 1e3;
-    constexpr double max_coordinate   = 1e4;
-    constexpr double max_force        = 1e12;
-    constexpr double max_friction     = 10;
+    constexpr double max_coordinate = 1e4;
+    constexpr double max_force      = 1e12;
+    constexpr double max_friction   = 10;
+    /** |g| [m/s^2]: about 1000 times the Earth's (a centrifuge test). */
+    constexpr double max_gravity      = 1e4;
     constexpr long   max_subdivisions = 100000;
     constexpr double max_cells        = 4e6;
 
@@ -52,6 +54,9 @@ namespace FuzzyContact
                    const std::string &what);
     double
     friction_coefficient(const double value, const std::string &what);
+    /** Throws unless @p g is finite and |g| <= max_gravity. */
+    Tensor<1, 2>
+    gravity(const Tensor<1, 2> &g, const std::string &what);
 
     /**
      * Checks every number of @p scene against the ranges above (called by

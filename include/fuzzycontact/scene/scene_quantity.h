@@ -64,6 +64,15 @@ namespace FuzzyContact
     bool
     is_material() const;
 
+    /**
+     * True for the modulus of one zone: it changes the shape of the
+     * stiffness (the reduced models re-analyse the component's modes). A
+     * density never changes the (static) stiffness; with gravity it scales
+     * the weight of its zone.
+     */
+    bool
+    reshapes_stiffness() const;
+
     /** The zones of the component a material quantity acts on. */
     std::vector<unsigned int>
     zones(const Scene &scene) const;

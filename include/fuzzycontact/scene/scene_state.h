@@ -46,15 +46,16 @@ namespace FuzzyContact
 
     /**
      * sum |F| over the loads of @p scene (this state's scene) that are
-     * forces, prescribed displacements left out [N].
+     * forces, prescribed displacements and weights left out [N].
      */
     double
     total_force(const Scene &scene) const;
 
     /**
      * Scales every load so that total_load() is @p load [N]. Refuses,
-     * naming @p key, a scene with a prescribed displacement (a force cannot
-     * scale it) and a non-zero @p load for a scene without loads.
+     * naming @p key, a scene with a prescribed displacement or with
+     * gravity (a force cannot scale either) and a non-zero @p load for a
+     * scene without loads.
      */
     void
     scale_forces_to(const Scene       &scene,

@@ -70,7 +70,8 @@ namespace FuzzyContact
 
     /**
      * The DoFs of component @p c on which its reduced model lives: its
-     * contact DoFs and the DoFs its loads act on (sorted).
+     * contact DoFs and the DoFs its loads act on (sorted), its weight's
+     * left out (it acts on every DoF; its response is carried whole).
      */
     std::vector<types::global_dof_index>
     boundary_dofs(const unsigned int c) const;
@@ -80,8 +81,9 @@ namespace FuzzyContact
      * its current materials, with boundary_dofs(c) ordered last. It is made
      * on first use ("stiffness factorisation (CHOLMOD)" in @p timer) and
      * kept until set_materials() changes the component; its holders keep
-     * theirs. The modes, the static correction and the load responses of a
-     * reduced model all use it.
+     * theirs (a change of the densities alone keeps it: the stiffness does
+     * not depend on them). The modes, the static correction and the load
+     * responses of a reduced model all use it.
      */
     std::shared_ptr<const SparseCholesky>
     stiffness_factorisation(const unsigned int c,

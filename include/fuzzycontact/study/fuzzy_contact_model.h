@@ -194,8 +194,9 @@ namespace FuzzyContact
 
     /**
      * For each fuzzy parameter, why it cannot change the answer, or empty
-     * if it can. A density cannot: the contact problem is static (K u = f,
-     * no mass). Both models evaluate such a parameter at its nominal value,
+     * if it can. A density cannot unless the scene has gravity (it then
+     * scales the weight of its zones): the contact problem is static (K u =
+     * f, no mass). Both models evaluate such a parameter at its nominal value,
      * so the outputs do not depend on it even through the reduced basis
      * (a re-analysed zone density would otherwise move the reduced answer
      * by its reduction error).

@@ -5,16 +5,18 @@
 //
 // Everything that does not depend on the state is computed once: the
 // reduced matrices of every component and the reduced contact flexibility,
-// and for components whose zone materials vary, a parameter-independent
+// and for components whose zone moduli vary, a parameter-independent
 // reanalysis. Per state, component by component:
 //  - zone moduli that are all the nominal ones times one factor s (a
 //    modulus of a whole component, or no change) scale its stiffness
 //    exactly: the modes stay, and so does its part of the contact
-//    flexibility, divided by s. Densities then do not
-//    matter: the modes keep their span, and the static reduced model does
-//    not change;
-//  - zone moduli and densities that change the mode shapes (quantities of
-//    single zones) go through the parameter-independent HPTP (modes T Y(p),
+//    flexibility, divided by s;
+//  - densities do not change the static stiffness (nor the span of the
+//    modes it was reduced with); with gravity, a body's weight follows
+//    them exactly: its response is carried whole, per zone K^{-1} w_z
+//    (ReducedComponentMatrices::weight_gaps), times rho_z / s;
+//  - zone moduli that change the shape of the stiffness (those of single
+//    zones) go through the parameter-independent HPTP (modes T Y(p),
 //    the order chosen offline from a tolerance at the corners of the
 //    quantities' ranges). The static correction then enters one of two
 //    ways: "residual flexibility" (the default) keeps the flexibility of
@@ -26,7 +28,14 @@
 //  - loads scale their load terms, friction coefficients and gaps enter the
 //    small contact problem directly.
 // A state that changes a component in a way the model was not built for
-// (zones of a component without reanalysis) is refused.
+// (zone moduli of a component without reanalysis) is refused, and so is a
+// reanalysis of a body with a weight (SceneQuantity::parse() refuses the
+// zone moduli of a scene with gravity: the weight's exact response would
+// change with them).
+//
+// With a weight the reduced answer stays exact: the weight's part of the
+// displacement is its exact static response, and the contact forces' part
+// V K_r^{-1} C_r^T p is exact by the static correction.
 
 #ifndef fuzzycontact_study_reduced_order_model_h
 #define fuzzycontact_study_reduced_order_model_h
