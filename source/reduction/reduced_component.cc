@@ -562,7 +562,8 @@ namespace FuzzyContact
         for (unsigned int i = 0; i < observed_dofs.size(); ++i)
           u[i] = weight_fields[z][observed_dofs[i]];
         Vector<double> e = component.weight_zone_resultants()[z];
-        e *= component.reference_load_force(weight);
+        if (e.size() > 0) // (a body held by contact alone)
+          e *= component.reference_load_force(weight);
         r.weight_gaps.push_back(std::move(g));
         r.weight_observation.push_back(std::move(u));
         r.weight_rigid_loads.push_back(std::move(e));
