@@ -99,93 +99,71 @@ step4_study_test(step-4.kinked step-4-kinked.prm kinked.prm
   "-DEDIT4_FROM=set number of alpha levels = 11"
   "-DEDIT4_TO=set number of alpha levels = 6")
 
+# step-4 on two MPI ranks against one process (compare_mpi_runs.cmake):
+# the same results, bit for bit where they were. Arguments: the test's
+# name, the step file and the scene under prm/, the output folder, then
+# further -D arguments: edits of the files, extra files, and which
+# components each rank assembles and factorises (RANK_ASSEMBLED,
+# RANK_FACTORISED: "<rank 0>|<rank 1>").
+function(step4_mpi_test name prm scene output)
+  add_test(NAME ${name}
+    COMMAND ${CMAKE_COMMAND}
+      -DPROGRAM=$<TARGET_FILE:step-4>
+      -DPRM=${CMAKE_SOURCE_DIR}/prm/${prm}
+      -DSCENE=${CMAKE_SOURCE_DIR}/prm/${scene}
+      -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/work/${name}
+      -DOUTPUT=${output}
+      ${ARGN}
+      "-DMPI_LAUNCHER=${DEAL_II_MPIEXEC}|${DEAL_II_MPIEXEC_NUMPROC_FLAG}|2"
+      -P ${CMAKE_CURRENT_SOURCE_DIR}/compare_mpi_runs.cmake)
+  set_tests_properties(${name} PROPERTIES
+    ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1"
+    PROCESSORS 2)
+endfunction()
+
 # Two MPI processes give the same bounds as one.
-add_test(NAME step-4.mpi_np2_same_as_np1
-  COMMAND ${CMAKE_COMMAND}
-    -DPROGRAM=$<TARGET_FILE:step-4>
-    -DPRM=${CMAKE_SOURCE_DIR}/prm/step-4.prm
-    -DSCENE=${CMAKE_SOURCE_DIR}/prm/overlap.prm
-    -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/work/step-4.mpi
-    -DOUTPUT=step-4-output
-    ${step4_quick}
-    "-DMPI_LAUNCHER=${DEAL_II_MPIEXEC}|${DEAL_II_MPIEXEC_NUMPROC_FLAG}|2"
-    "-DRANK_ASSEMBLED=P1|P2"
-    "-DRANK_FACTORISED=P1|P2"
-    -P ${CMAKE_CURRENT_SOURCE_DIR}/compare_mpi_runs.cmake)
-set_tests_properties(step-4.mpi_np2_same_as_np1 PROPERTIES
-  ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1"
-  PROCESSORS 2)
+step4_mpi_test(step-4.mpi_np2_same_as_np1 step-4.prm overlap.prm step-4-output
+  ${step4_quick}
+  "-DRANK_ASSEMBLED=P1|P2"
+  "-DRANK_FACTORISED=P1|P2")
 
 # The same on the zone study: the re-analysed component P1 is built on the
 # first rank, which alone solves the reduced model; P2 on the second, which
 # assembles and factorises P1 too for its share of the proofs (each at new
 # zone moduli of P1), but the first never touches P2.
-add_test(NAME step-4.zones_mpi_np2_same_as_np1
-  COMMAND ${CMAKE_COMMAND}
-    -DPROGRAM=$<TARGET_FILE:step-4>
-    -DPRM=${CMAKE_SOURCE_DIR}/prm/step-4-zones.prm
-    -DSCENE=${CMAKE_SOURCE_DIR}/prm/overlap-zones.prm
-    -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/work/step-4.zones_mpi
-    -DOUTPUT=step-4-zones-output
-    ${step4_quick}
-    "-DMPI_LAUNCHER=${DEAL_II_MPIEXEC}|${DEAL_II_MPIEXEC_NUMPROC_FLAG}|2"
-    "-DRANK_ASSEMBLED=P1|P1,P2"
-    "-DRANK_FACTORISED=P1|P1,P2"
-    -P ${CMAKE_CURRENT_SOURCE_DIR}/compare_mpi_runs.cmake)
-set_tests_properties(step-4.zones_mpi_np2_same_as_np1 PROPERTIES
-  ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1"
-  PROCESSORS 2)
+step4_mpi_test(step-4.zones_mpi_np2_same_as_np1 step-4-zones.prm overlap-zones.prm step-4-zones-output
+  ${step4_quick}
+  "-DRANK_ASSEMBLED=P1|P1,P2"
+  "-DRANK_FACTORISED=P1|P1,P2")
 
 # A prescribed displacement (the roller of prm/hertz.prm, curved meshes):
 # its loads come from the stiffness, and the rank that does not build the
 # roller receives them instead of assembling it.
-add_test(NAME step-4.hertz_mpi_np2_same_as_np1
-  COMMAND ${CMAKE_COMMAND}
-    -DPROGRAM=$<TARGET_FILE:step-4>
-    -DPRM=${CMAKE_SOURCE_DIR}/prm/step-4-hertz.prm
-    -DSCENE=${CMAKE_SOURCE_DIR}/prm/hertz.prm
-    -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/work/step-4.hertz_mpi
-    -DOUTPUT=step-4-hertz-output
-    -DEXTRA_FILES=${CMAKE_SOURCE_DIR}/prm/meshes
-    "-DEDIT_FILE=step"
-    "-DEDIT_FROM=set number of alpha levels = 11"
-    "-DEDIT_TO=set number of alpha levels = 2"
-    "-DEDIT2_FILE=step"
-    "-DEDIT2_FROM=set points per dimension = 4"
-    "-DEDIT2_TO=set points per dimension = 3"
-    "-DMPI_LAUNCHER=${DEAL_II_MPIEXEC}|${DEAL_II_MPIEXEC_NUMPROC_FLAG}|2"
-    "-DRANK_ASSEMBLED=Roller|Block"
-    "-DRANK_FACTORISED=Roller|Block"
-    -P ${CMAKE_CURRENT_SOURCE_DIR}/compare_mpi_runs.cmake)
-set_tests_properties(step-4.hertz_mpi_np2_same_as_np1 PROPERTIES
-  ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1"
-  PROCESSORS 2)
+step4_mpi_test(step-4.hertz_mpi_np2_same_as_np1 step-4-hertz.prm hertz.prm step-4-hertz-output
+  -DEXTRA_FILES=${CMAKE_SOURCE_DIR}/prm/meshes
+  "-DEDIT_FILE=step"
+  "-DEDIT_FROM=set number of alpha levels = 11"
+  "-DEDIT_TO=set number of alpha levels = 2"
+  "-DEDIT2_FILE=step"
+  "-DEDIT2_FROM=set points per dimension = 4"
+  "-DEDIT2_TO=set points per dimension = 3"
+  "-DRANK_ASSEMBLED=Roller|Block"
+  "-DRANK_FACTORISED=Roller|Block")
 
 # Three components on two ranks (components 0 and 2 on rank 0); its
 # reference is made of independent analyses, for which every rank assembles
 # every component.
-add_test(NAME step-4.three_beams_mpi_np2_same_as_np1
-  COMMAND ${CMAKE_COMMAND}
-    -DPROGRAM=$<TARGET_FILE:step-4>
-    -DPRM=${CMAKE_SOURCE_DIR}/prm/step-4-three-beams.prm
-    -DSCENE=${CMAKE_SOURCE_DIR}/prm/three-beams.prm
-    -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/work/step-4.three_beams_mpi
-    -DOUTPUT=step-4-three-beams-output
-    "-DEDIT_FILE=step"
-    "-DEDIT_FROM=set mesh refinements       = 2"
-    "-DEDIT_TO=set mesh refinements       = 0"
-    "-DEDIT2_FILE=step"
-    "-DEDIT2_FROM=set number of alpha levels = 6"
-    "-DEDIT2_TO=set number of alpha levels = 3"
-    "-DEDIT3_FILE=step"
-    "-DEDIT3_FROM=set points per dimension = 4"
-    "-DEDIT3_TO=set points per dimension = 3"
-    "-DMPI_LAUNCHER=${DEAL_II_MPIEXEC}|${DEAL_II_MPIEXEC_NUMPROC_FLAG}|2"
-    "-DRANK_FACTORISED=P1,P3|P2"
-    -P ${CMAKE_CURRENT_SOURCE_DIR}/compare_mpi_runs.cmake)
-set_tests_properties(step-4.three_beams_mpi_np2_same_as_np1 PROPERTIES
-  ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1"
-  PROCESSORS 2)
+step4_mpi_test(step-4.three_beams_mpi_np2_same_as_np1 step-4-three-beams.prm three-beams.prm step-4-three-beams-output
+  "-DEDIT_FILE=step"
+  "-DEDIT_FROM=set mesh refinements       = 2"
+  "-DEDIT_TO=set mesh refinements       = 0"
+  "-DEDIT2_FILE=step"
+  "-DEDIT2_FROM=set number of alpha levels = 6"
+  "-DEDIT2_TO=set number of alpha levels = 3"
+  "-DEDIT3_FILE=step"
+  "-DEDIT3_FROM=set points per dimension = 4"
+  "-DEDIT3_TO=set points per dimension = 3"
+  "-DRANK_FACTORISED=P1,P3|P2")
 
 # Bad input: each edits one line of prm/step-4.prm.
 set(step4_bad_inputs
@@ -237,26 +215,15 @@ step4_study_test(step-4.gravity step-4-column.prm column.prm
 # The same on two MPI ranks: the bodies' weights travel with their reduced
 # blocks (the zone responses), and each rank assembles and factorises its
 # own body only.
-add_test(NAME step-4.gravity_mpi_np2_same_as_np1
-  COMMAND ${CMAKE_COMMAND}
-    -DPROGRAM=$<TARGET_FILE:step-4>
-    -DPRM=${CMAKE_SOURCE_DIR}/prm/step-4-column.prm
-    -DSCENE=${CMAKE_SOURCE_DIR}/prm/column.prm
-    -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/work/step-4.gravity_mpi
-    -DOUTPUT=step-4-column-output
-    "-DEDIT_FILE=step"
-    "-DEDIT_FROM=set number of alpha levels = 11"
-    "-DEDIT_TO=set number of alpha levels = 3"
-    "-DEDIT2_FILE=step"
-    "-DEDIT2_FROM=set points per dimension = 4"
-    "-DEDIT2_TO=set points per dimension = 3"
-    "-DMPI_LAUNCHER=${DEAL_II_MPIEXEC}|${DEAL_II_MPIEXEC_NUMPROC_FLAG}|2"
-    "-DRANK_ASSEMBLED=Column|Footing"
-    "-DRANK_FACTORISED=Column|Footing"
-    -P ${CMAKE_CURRENT_SOURCE_DIR}/compare_mpi_runs.cmake)
-set_tests_properties(step-4.gravity_mpi_np2_same_as_np1 PROPERTIES
-  ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1"
-  PROCESSORS 2)
+step4_mpi_test(step-4.gravity_mpi_np2_same_as_np1 step-4-column.prm column.prm step-4-column-output
+  "-DEDIT_FILE=step"
+  "-DEDIT_FROM=set number of alpha levels = 11"
+  "-DEDIT_TO=set number of alpha levels = 3"
+  "-DEDIT2_FILE=step"
+  "-DEDIT2_FROM=set points per dimension = 4"
+  "-DEDIT2_TO=set points per dimension = 3"
+  "-DRANK_ASSEMBLED=Column|Footing"
+  "-DRANK_FACTORISED=Column|Footing")
 
 # Under gravity the weight is no quantity of its own, and a zone's modulus
 # cannot vary (the weight's exact response would need new factorisations).
