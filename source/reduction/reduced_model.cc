@@ -211,20 +211,20 @@ namespace FuzzyContact
       {
         variable[c].matrices = std::move(components[c]);
         compute_blocks(variable[c]);
-        load_forces.push_back(variable[c].matrices.reference_forces);
-        densities.push_back(variable[c].matrices.zone_densities);
       }
-    collect_free_motions();
-    flexibility_         = std::make_shared<Flexibility>(*this);
-    problem_.flexibility = flexibility_;
-    flexibility_changed();
+    finish_construction();
   }
 
 
   void
-  ReducedContactModel::collect_free_motions()
+  ReducedContactModel::finish_construction()
   {
-    // Every component's motions after the previous one's.
+    for (const Part &part : variable)
+      {
+        load_forces.push_back(part.matrices.reference_forces);
+        densities.push_back(part.matrices.zone_densities);
+      }
+    // The free motions: every component's after the previous one's.
     const unsigned int m         = problem_.g_initial.size();
     unsigned int       n_motions = 0;
     first_motion.clear();
@@ -253,6 +253,10 @@ namespace FuzzyContact
           }
       }
     problem_.rigid_load.reinit(n_motions);
+
+    flexibility_         = std::make_shared<Flexibility>(*this);
+    problem_.flexibility = flexibility_;
+    flexibility_changed();
   }
 
 
@@ -286,13 +290,8 @@ namespace FuzzyContact
         Part received = Utilities::MPI::broadcast(comm, variable[c], owner[c]);
         if (rank != owner[c])
           variable[c] = std::move(received);
-        load_forces.push_back(variable[c].matrices.reference_forces);
-        densities.push_back(variable[c].matrices.zone_densities);
       }
-    collect_free_motions();
-    flexibility_         = std::make_shared<Flexibility>(*this);
-    problem_.flexibility = flexibility_;
-    flexibility_changed();
+    finish_construction();
   }
 
 

@@ -248,10 +248,11 @@ namespace FuzzyContact
     // Checks and factorises a part's matrices, and forms its blocks.
     void
     compute_blocks(Part &part) const;
-    // The free motions of the bodies held by contact alone, from every
-    // component's matrices (first_motion, the problem's RigidMotions).
+    // Once every component's blocks are in variable: the reference load
+    // forces and densities, the free motions of the bodies held by contact
+    // alone (first_motion, the problem's RigidMotions), and W.
     void
-    collect_free_motions();
+    finish_construction();
     // The state of W changed: columns are combined afresh.
     void
     flexibility_changed();
