@@ -515,6 +515,26 @@ namespace FuzzyContact
 
 
   ReducedComponentMatrices
+  ReducedComponentMatrices::without_basis() const
+  {
+    ReducedComponentMatrices r;
+    r.reference_forces       = reference_forces;
+    r.stiffness_proportional = stiffness_proportional;
+    r.observed_dofs          = observed_dofs;
+    r.rigid_gaps             = rigid_gaps;
+    r.rigid_loads            = rigid_loads;
+    r.rigid_observation      = rigid_observation;
+    r.motion_names           = motion_names;
+    r.weight_load            = weight_load;
+    r.weight_gaps            = weight_gaps;
+    r.weight_observation     = weight_observation;
+    r.weight_rigid_loads     = weight_rigid_loads;
+    r.zone_densities         = zone_densities;
+    return r;
+  }
+
+
+  ReducedComponentMatrices
   ReducedComponent::matrices(
     const SparseMatrix<double>                 &gap_operator,
     const std::vector<types::global_dof_index> &observed_dofs) const

@@ -35,8 +35,8 @@ namespace FuzzyContact
             const unsigned int              begin,
             const unsigned int              n)
     {
-      ReducedComponentMatrices part;
-      part.stiffness = block(r.stiffness, begin, n, begin, n);
+      ReducedComponentMatrices part = r.without_basis();
+      part.stiffness                = block(r.stiffness, begin, n, begin, n);
       part.gap_operator =
         block(r.gap_operator, 0, r.gap_operator.m(), begin, n);
       for (const Vector<double> &load : r.loads)
@@ -46,22 +46,14 @@ namespace FuzzyContact
             f[i] = load[begin + i];
           part.loads.push_back(std::move(f));
         }
-      part.reference_forces       = r.reference_forces;
-      part.stiffness_proportional = r.stiffness_proportional;
-      part.observed_dofs          = r.observed_dofs;
-      part.rigid_gaps             = r.rigid_gaps;
-      part.rigid_loads            = r.rigid_loads;
-      part.rigid_observation      = r.rigid_observation;
-      part.motion_names           = r.motion_names;
-      part.zone_densities         = r.zone_densities;
       part.observation = block(r.observation, 0, r.observation.m(), begin, n);
       // The weight's exact responses, in the first part only.
-      if (begin == 0)
+      if (begin > 0)
         {
-          part.weight_load        = r.weight_load;
-          part.weight_gaps        = r.weight_gaps;
-          part.weight_observation = r.weight_observation;
-          part.weight_rigid_loads = r.weight_rigid_loads;
+          part.weight_load = -1;
+          part.weight_gaps.clear();
+          part.weight_observation.clear();
+          part.weight_rigid_loads.clear();
         }
       return part;
     }
@@ -448,7 +440,8 @@ namespace FuzzyContact
     const std::vector<double> E   = materials.first;
 
     const FullMatrix<double> Y = block(modes.Y, 0, n_T, 0, n_m);
-    ReducedComponentMatrices r;
+    // (Reanalysed bodies carry no weight: refused in the constructor.)
+    ReducedComponentMatrices r = m.nominal_matrices.without_basis();
 
     // K_r
     r.stiffness.reinit(k, k);
@@ -509,15 +502,7 @@ namespace FuzzyContact
           f[n_m + j] = m.psi_f[l][j];
         r.loads.push_back(std::move(f));
       }
-    r.reference_forces       = m.nominal_matrices.reference_forces;
-    r.stiffness_proportional = m.nominal_matrices.stiffness_proportional;
-    r.rigid_gaps             = m.nominal_matrices.rigid_gaps;
-    r.rigid_loads            = m.nominal_matrices.rigid_loads;
-    r.rigid_observation      = m.nominal_matrices.rigid_observation;
-    r.motion_names           = m.nominal_matrices.motion_names;
-    r.zone_densities         = m.nominal_matrices.zone_densities;
-    r.observed_dofs          = m.nominal_matrices.observed_dofs;
-    r.observation            = on_basis(m.O_T, m.O_psi);
+    r.observation = on_basis(m.O_T, m.O_psi);
     return r;
   }
 

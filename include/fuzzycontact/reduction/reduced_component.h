@@ -117,6 +117,15 @@ namespace FuzzyContact
     std::vector<Vector<double>> weight_rigid_loads;
     std::vector<double>         zone_densities;
 
+    /**
+     * These matrices without what depends on the basis V (stiffness,
+     * gap_operator, loads and observation are left empty): the reference
+     * forces, the observed DoFs, the free motions and the weight's
+     * responses, which a part of the basis or a re-analysed basis shares.
+     */
+    ReducedComponentMatrices
+    without_basis() const;
+
     /** For Utilities::MPI::broadcast and other serialisation. */
     template <class Archive>
     void
