@@ -203,34 +203,32 @@ fuzzycontact_bad_input_tests(step-4 overlap "${step4_bad_inputs}")
 # step-4 under gravity (prm/step-4-column.prm: a column on a footing under
 # their own weights; the column's density is fuzzy and scales its weight),
 # 3 alpha levels, 3 points per parameter.
-step4_study_test(step-4.gravity step-4-column.prm column.prm
-  step-4-column-output check_step-4_column.cmake
+set(step4_column_quick
   "-DEDIT_FILE=step"
   "-DEDIT_FROM=set number of alpha levels = 11"
   "-DEDIT_TO=set number of alpha levels = 3"
   "-DEDIT2_FILE=step"
   "-DEDIT2_FROM=set points per dimension = 4"
   "-DEDIT2_TO=set points per dimension = 3")
+step4_study_test(step-4.gravity step-4-column.prm column.prm
+  step-4-column-output check_step-4_column.cmake ${step4_column_quick})
 
 # The same on two MPI ranks: the bodies' weights travel with their reduced
 # blocks (the zone responses), and each rank assembles and factorises its
 # own body only.
 step4_mpi_test(step-4.gravity_mpi_np2_same_as_np1 step-4-column.prm column.prm step-4-column-output
-  "-DEDIT_FILE=step"
-  "-DEDIT_FROM=set number of alpha levels = 11"
-  "-DEDIT_TO=set number of alpha levels = 3"
-  "-DEDIT2_FILE=step"
-  "-DEDIT2_FROM=set points per dimension = 4"
-  "-DEDIT2_TO=set points per dimension = 3"
+  ${step4_column_quick}
   "-DRANK_ASSEMBLED=Column|Footing"
   "-DRANK_FACTORISED=Column|Footing")
 
 # Under gravity the weight is no quantity of its own, and a zone's modulus
 # cannot vary (the weight's exact response would need new factorisations).
-fuzzycontact_program_test(step-4.bad_input.weight_force step-4 column
+set(step4_column_refused
   -DEXPECT=failure
   -DPRM=${CMAKE_SOURCE_DIR}/prm/step-4-column.prm
-  -DOUTPUT=step-4-column-output
+  -DOUTPUT=step-4-column-output)
+fuzzycontact_program_test(step-4.bad_input.weight_force step-4 column
+  ${step4_column_refused}
   -DEDIT_FILE=step
   "-DEDIT_FROM=Column.rho, Footing.E, Column.E"
   "-DEDIT_TO=Column.weight.force, Footing.E, Column.E"
@@ -239,9 +237,7 @@ fuzzycontact_program_test(step-4.bad_input.weight_force step-4 column
   "-DEDIT2_TO=subsection Fuzzy parameter Column.weight.force"
   "-DMESSAGE=Scene quantity <Column.weight.force>: the weight of component Column is not a quantity of its own: vary Column.rho")
 fuzzycontact_program_test(step-4.bad_input.zone_modulus_with_gravity step-4 column
-  -DEXPECT=failure
-  -DPRM=${CMAKE_SOURCE_DIR}/prm/step-4-column.prm
-  -DOUTPUT=step-4-column-output
+  ${step4_column_refused}
   -DEDIT_FILE=step
   "-DEDIT_FROM=Column.rho, Footing.E, Column.E"
   "-DEDIT_TO=Column.rho, Footing.body.E, Column.E"
