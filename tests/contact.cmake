@@ -73,7 +73,7 @@ fuzzycontact_program_test(step-3.diagnostic_solver_fails
   -DEDIT2_FILE=step
   "-DEDIT2_FROM=set coarse correction = active set"
   "-DEDIT2_TO=set coarse correction = none"
-  "-DMESSAGE= fl2c_modes +failed: fl2c_modes: the fuzzy regulators did not converge in 20000 iterations \\(load step 1\\); complementarity residual.*\n reduced_exact_modes +[-0-9]")
+  "-DMESSAGE= fl2c_modes +failed: fl2c_modes: the fuzzy regulators did not converge in 20000 iterations \\(key 'FL2C/max iterations'; load step 1\\); complementarity residual.*\n reduced_exact_modes +[-0-9]")
 
 # A body held by contact alone (prm/step-3-slope.prm: a block on a slope):
 # every solver carries statics' N = F cos 20 and T = F sin 20, and the

@@ -100,7 +100,7 @@ step4_study_test(step-4.kinked step-4-kinked.prm kinked.prm
   "-DEDIT4_TO=set number of alpha levels = 6")
 
 # step-4 on two MPI ranks against one process (compare_mpi_runs.cmake):
-# the same results, bit for bit where they were. Arguments: the test's
+# the same results to round-off. Arguments: the test's
 # name, the step file and the scene under prm/, the output folder, then
 # further -D arguments: edits of the files, extra files, and which
 # components each rank assembles and factorises (RANK_ASSEMBLED,
@@ -112,6 +112,7 @@ function(step4_mpi_test name prm scene output)
       -DPRM=${CMAKE_SOURCE_DIR}/prm/${prm}
       -DSCENE=${CMAKE_SOURCE_DIR}/prm/${scene}
       -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/work/${name}
+      -DSTUDY_TESTS=$<TARGET_FILE:study>
       -DOUTPUT=${output}
       ${ARGN}
       "-DMPI_LAUNCHER=${DEAL_II_MPIEXEC}|${DEAL_II_MPIEXEC_NUMPROC_FLAG}|2"

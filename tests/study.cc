@@ -7,11 +7,13 @@
 #include <fuzzycontact/base/input.h>
 #include <fuzzycontact/base/sparse_cholesky.h>
 #include <fuzzycontact/contact/active_set_solver.h>
+#include <fuzzycontact/contact/contact_workspace.h>
 #include <fuzzycontact/contact/fl2c.h>
 #include <fuzzycontact/contact/full_order_contact.h>
 #include <fuzzycontact/fe/component.h>
 #include <fuzzycontact/fuzzy/fuzzy_parameters.h>
 #include <fuzzycontact/fuzzy/vertex_method.h>
+#include <fuzzycontact/output/report.h>
 #include <fuzzycontact/scene/scene.h>
 #include <fuzzycontact/scene/scene_quantity.h>
 #include <fuzzycontact/scene/scene_state.h>
@@ -23,6 +25,8 @@
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
+
+#include <nlohmann/json.hpp>
 
 #include <gtest/gtest.h>
 
@@ -871,4 +875,172 @@ TEST(Gravity, RefusedInput)
               state.scale_forces_to(s, 5e4, "load");
             }).find("has gravity"),
             std::string::npos);
+}
+
+
+// Warm starts (contact/contact_workspace.h): the block of prm/slope.prm,
+// held by contact alone, pressed and then pushed down the slope in a second
+// load stage of three steps. A solve at a neighbouring point (the slope's
+// modulus 2 % up, mu 0.55 instead of 0.5) started from the first point's
+// states per load step, with the factors kept from it, gives the answer of
+// a cold solve (every factor made anew, the frictionless start) to 1e-10 of
+// the forces, in fewer iterations; so does FL2C started from the first
+// point's forces (to 1e-8, its tolerance being 1e-11).
+TEST(WarmStarts, ANeighboursStatesGiveTheColdAnswer)
+{
+  std::ifstream      in(source_dir + "/prm/slope.prm");
+  std::ostringstream text;
+  text << in.rdbuf();
+  std::string staged = replace(text.str(),
+                               "  set contact pairs = block-on-slope\n",
+                               "  set contact pairs = block-on-slope\n"
+                               "  set load stages   = press, push\n");
+  staged             = replace(staged,
+                   "  set loads      = weight\n",
+                   "  set loads      = weight, push\n"
+                               "  subsection Load push\n"
+                               "    set face        = uphill\n"
+                               "    set total force = 8e2\n"
+                               "    set direction   = -0.9397, -0.3420\n"
+                               "  end\n");
+  staged += "subsection Stage press\n  set loads = Block.weight\nend\n"
+            "subsection Stage push\n  set loads = Block.push\n"
+            "  set load steps = 3\nend\n";
+  const Scene scene =
+    Scene::read_from_string(staged, source_dir + "/prm/slope.prm");
+  ContactScene         bodies(scene, 0);
+  const Observations   outputs({"Fn", "Ft"}, bodies);
+  ReducedModelSettings settings;
+  ReducedOrderModel    model(bodies,
+                          std::vector<ModalBasis>(2),
+                          outputs.dofs(),
+                          std::vector<VaryingQuantity>(),
+                          settings);
+  SceneState           first(scene), second(scene);
+  SceneQuantity::parse("Slope.E", scene).apply(second, scene, 1.02 * 210e9);
+  SceneQuantity::parse("block-on-slope.mu", scene).apply(second, scene, 0.55);
+
+  for (const bool fl2c : {false, true})
+    {
+      FL2CParameters parameters;
+      parameters.tolerance = 1e-11;
+      const ActiveSetSolver exact;
+      const FL2CSolver      regulators(parameters);
+      const ContactSolver  &solver =
+        fl2c ? static_cast<const ContactSolver &>(regulators) : exact;
+      ContactWorkspace &workspace = model.workspace();
+
+      // The second point cold.
+      workspace.clear();
+      workspace.start.clear();
+      model.set_state(second);
+      const ContactSolution cold = model.solve(solver);
+      // The first point, then the second from its states and factors.
+      workspace.clear();
+      model.set_state(first);
+      model.solve(solver);
+      ASSERT_EQ(workspace.converged.size(), 4u);
+      workspace.start = workspace.converged;
+      model.set_state(second);
+      const ContactSolution warm = model.solve(solver);
+
+      Vector<double> difference = warm.p;
+      difference -= cold.p;
+      EXPECT_LE(difference.linfty_norm(),
+                (fl2c ? 1e-8 : 1e-10) * cold.p.linfty_norm())
+        << solver.name();
+      // (FL2C makes at least one sweep and one check per load step
+      // either way.)
+      if (!fl2c)
+        EXPECT_LT(warm.iterations, cold.iterations);
+      EXPECT_GT(cold.p.linfty_norm(), 0.);
+    }
+}
+
+namespace
+{
+  // The largest difference between the bounds of two step-4 results.json
+  // texts (every output, level and method), relative to the output's
+  // largest value over all levels and methods; @p where names it.
+  double
+  largest_bound_difference(const std::string &one,
+                           const std::string &two,
+                           std::string       &where)
+  {
+    const nlohmann::json a     = nlohmann::json::parse(one);
+    const nlohmann::json b     = nlohmann::json::parse(two);
+    double               worst = 0;
+    AssertThrow(a["outputs"].size() == b["outputs"].size(),
+                ExcMessage("the runs have different outputs"));
+    for (unsigned int k = 0; k < a["outputs"].size(); ++k)
+      {
+        const nlohmann::json &x = a["outputs"][k], &y = b["outputs"][k];
+        double                scale = 0;
+        for (const char *key : {"lower", "upper"})
+          for (const double v : x[key].get<std::vector<double>>())
+            scale = std::max(scale, std::abs(v));
+        for (const char *key : {"lower",
+                                "upper",
+                                "vertex_lower",
+                                "vertex_upper",
+                                "reference_lower",
+                                "reference_upper"})
+          {
+            if (!x.contains(key) || x[key].is_null())
+              continue;
+            const auto u = x[key].get<std::vector<double>>();
+            const auto v = y[key].get<std::vector<double>>();
+            AssertThrow(u.size() == v.size(),
+                        ExcMessage("the runs have different levels"));
+            for (unsigned int i = 0; i < u.size(); ++i)
+              {
+                const double d =
+                  scale > 0 ? std::abs(u[i] - v[i]) / scale : u[i] != v[i];
+                if (d > worst)
+                  {
+                    worst = d;
+                    where = x["name"].get<std::string>() + " " + key +
+                            " level " + std::to_string(i) + ": " +
+                            Format::scientific(u[i], 17) + " and " +
+                            Format::scientific(v[i], 17);
+                  }
+              }
+          }
+      }
+    return worst;
+  }
+} // namespace
+
+
+// tests/compare_mpi_runs.cmake runs this test on the results.json of a
+// one-process and a two-process step-4 run (FUZZYCONTACT_RESULTS_NP1 and
+// _NP2): their bounds agree to 1e-9 of each output's size. The contact
+// solvers start each evaluation from its nearest neighbour's state
+// (study/warm_starts.h), and the ranks do not see the same neighbours, so
+// the answers agree to round-off and the solvers' tolerances, not bit for
+// bit. Without the variables it checks the comparison itself.
+TEST(MpiRuns, BoundsAgreeToRoundOff)
+{
+  const char *np1 = std::getenv("FUZZYCONTACT_RESULTS_NP1");
+  const char *np2 = std::getenv("FUZZYCONTACT_RESULTS_NP2");
+  std::string where;
+  if (np1 == nullptr || np2 == nullptr)
+    {
+      const std::string one =
+        R"({"outputs": [{"name": "Fn", "lower": [1.0, 2.0],
+            "upper": [4.0, 3.0], "vertex_lower": [1.0, 2.0],
+            "vertex_upper": [4.0, 3.0]}]})";
+      std::string two = one;
+      EXPECT_EQ(largest_bound_difference(one, two, where), 0.);
+      two.replace(two.find("[4.0, 3.0]}"), 11, "[4.0, 3.0000001]}");
+      EXPECT_NEAR(largest_bound_difference(one, two, where), 2.5e-8, 1e-15);
+      EXPECT_EQ(where.substr(0, 22), "Fn vertex_upper level ");
+      return;
+    }
+  const double worst = largest_bound_difference(Input::read_text_file(np1),
+                                                Input::read_text_file(np2),
+                                                where);
+  EXPECT_LE(worst, 1e-9) << where;
+  std::cout << "largest difference " << worst << " of an output's size ("
+            << where << ")" << std::endl;
 }

@@ -1,5 +1,6 @@
 #include <fuzzycontact/base/input.h>
 #include <fuzzycontact/contact/active_set_solver.h>
+#include <fuzzycontact/contact/contact_workspace.h>
 #include <fuzzycontact/contact/status_system.h>
 
 #include <deal.II/base/exceptions.h>
@@ -80,6 +81,7 @@ namespace FuzzyContact
           , n(mu.size())
           , tol(parameters.tolerance)
           , max_iterations(parameters.max_iterations)
+          , max_iterations_key(parameters.max_iterations_key)
           , cn(n, 0.)
           , ct(n, 0.)
           , c_n([this](const unsigned int k) {
@@ -88,8 +90,12 @@ namespace FuzzyContact
           , c_t([this](const unsigned int k) {
             return diagonal_inverse(tangential_row(k), ct, k);
           })
-          , status(step.previous.status)
-          , sign(step.previous.slip_sign)
+          , status(step.start != nullptr ? step.start->status
+                                         : step.previous.status)
+          , sign(step.start != nullptr ? step.start->slip_sign
+                                       : step.previous.slip_sign)
+          , linear(step.workspace != nullptr ? step.workspace->linear(step.step)
+                                             : own_linear)
       {
         if (status.size() != n)
           status.assign(n, ContactStatus::open);
@@ -145,12 +151,12 @@ namespace FuzzyContact
             const double scale = residual_scale(state.p, step.g_free, c_n);
             const double worst = *std::max_element(r.begin(), r.end());
             residual           = std::max(worst == 0 ? 0. : worst / scale,
-                                equilibrium_residual(step, state.p));
+                                equilibrium_residual(step, state.p, scale));
             state.iterations = iterations;
             state.residual   = residual;
             if (residual <= tol)
               {
-                check_motions_determined(step, state.p, what);
+                check_motions_determined(step, state.p, what, scale);
                 return converged(state);
               }
             if (iterations >= max_iterations)
@@ -166,7 +172,7 @@ namespace FuzzyContact
                         << " iterations, but the complementarity residual is "
                         << residual << " > " << tol
                         << (step.n_motions() > 0 &&
-                                equilibrium_residual(step, state.p) > tol
+                                equilibrium_residual(step, state.p, scale) > tol
                               ? " (the contact forces of the closed nodes "
                                 "cannot balance the load on the bodies held by "
                                 "contact alone: their position is not "
@@ -198,10 +204,9 @@ namespace FuzzyContact
           }
 
         std::ostringstream message;
-        message << what
-                << ": the active set method did not converge in max_iterations "
-                   "= "
-                << max_iterations << " iterations (load step " << step.step
+        message << what << ": the active set method did not converge in "
+                << max_iterations << " iterations (key '" << max_iterations_key
+                << "'; load step " << step.step
                 << "); complementarity residual " << residual << " > " << tol
                 << ".";
         AssertThrow(false, ExcMessage(message.str()));
@@ -253,16 +258,20 @@ namespace FuzzyContact
         const auto update_gaps = [&]() {
           closed_list.clear();
           for (unsigned int k = 0; k < n; ++k)
-            if (closed[k])
-              closed_list.push_back(k);
-          for (unsigned int k = 0; k < n; ++k)
             {
               gn[k] = step.g_free[normal_row(k)];
-              for (const unsigned int j : closed_list)
-                gn[k] += W(normal_row(k), normal_row(j)) * p[j];
-              for (unsigned int j = 0; j < a.size(); ++j)
-                gn[k] += step.rigid->gaps(normal_row(k), j) * a[j];
+              if (closed[k])
+                closed_list.push_back(k);
             }
+          for (const unsigned int j : closed_list)
+            {
+              const double *w = W.column(normal_row(j));
+              for (unsigned int k = 0; k < n; ++k)
+                gn[k] += w[normal_row(k)] * p[j];
+            }
+          for (unsigned int j = 0; j < a.size(); ++j)
+            for (unsigned int k = 0; k < n; ++k)
+              gn[k] += step.rigid->gaps(normal_row(k), j) * a[j];
         };
         update_gaps();
         while (true)
@@ -287,9 +296,9 @@ namespace FuzzyContact
                 std::ostringstream message;
                 message << what
                         << ": the frictionless start (Lawson-Hanson) did not "
-                           "finish in max_iterations = "
-                        << max_iterations << " iterations (load step "
-                        << step.step
+                           "finish in "
+                        << max_iterations << " iterations (key '"
+                        << max_iterations_key << "'; load step " << step.step
                         << "); the deepest open node still "
                            "penetrates by "
                         << -gn[deepest] << " m.";
@@ -344,18 +353,24 @@ namespace FuzzyContact
                   slips[k] = ContactStatus::slip;
                 }
             const unsigned int size = closed_list.size();
-            const StatusSystem system(W,
-                                      slips,
-                                      std::vector<int>(n, 1),
-                                      frictionless,
-                                      step.rigid);
-            Vector<double>     b(size);
+            Vector<double>     target(2 * n), forces, a_new;
             for (unsigned int r = 0; r < size; ++r)
-              b[r] = -step.g_free[normal_row(closed_list[r])];
-            const Vector<double> x     = system.solve(b, step.rigid_load);
-            const Vector<double> a_new = system.amplitudes(x);
-            double               alpha = 1;
-            int                  limit = -1;
+              target[normal_row(closed_list[r])] =
+                -step.g_free[normal_row(closed_list[r])];
+            linear.solve(W,
+                         slips,
+                         std::vector<int>(n, 1),
+                         frictionless,
+                         step.rigid,
+                         target,
+                         step.rigid_load,
+                         forces,
+                         a_new);
+            Vector<double> x(size);
+            for (unsigned int r = 0; r < size; ++r)
+              x[r] = forces[normal_row(closed_list[r])];
+            double alpha = 1;
+            int    limit = -1;
             for (unsigned int r = 0; r < size; ++r)
               if (x[r] <= 0)
                 {
@@ -408,19 +423,31 @@ namespace FuzzyContact
       void
       solve_with_statuses(ContactState &state)
       {
-        const StatusSystem system(W, status, sign, mu, step.rigid);
-        Vector<double>     b(system.rows.size());
-        for (unsigned int r = 0; r < b.size(); ++r)
-          {
-            const unsigned int i = system.rows[r];
-            b[r] = (r < system.closed.size() ? 0. : step.g_previous[i]) -
-                   step.g_free[i];
-          }
-        const Vector<double> x = system.solve(b, step.rigid_load);
-        state.p                = system.forces(x, status, sign, mu);
-        state.rigid            = system.amplitudes(x);
-        state.g =
-          gaps_of(W, step.g_free, state.p, system.columns, &step, state.rigid);
+        Vector<double>            target(2 * n);
+        std::vector<unsigned int> columns;
+        for (unsigned int k = 0; k < n; ++k)
+          if (status[k] != ContactStatus::open)
+            {
+              target[normal_row(k)] = -step.g_free[normal_row(k)];
+              columns.push_back(normal_row(k));
+              if (mu[k] > 0)
+                {
+                  columns.push_back(tangential_row(k));
+                  target[tangential_row(k)] =
+                    step.g_previous[tangential_row(k)] -
+                    step.g_free[tangential_row(k)];
+                }
+            }
+        linear.solve(W,
+                     status,
+                     sign,
+                     mu,
+                     step.rigid,
+                     target,
+                     step.rigid_load,
+                     state.p,
+                     state.rigid);
+        state.g = gaps_of(W, step.g_free, state.p, columns, &step, state.rigid);
       }
 
       // The status of node k that the complementarity functions predict.
@@ -516,6 +543,7 @@ namespace FuzzyContact
       const unsigned int         n;
       const double               tol;
       const unsigned int         max_iterations;
+      const std::string          max_iterations_key;
 
       // Scaling of the complementarity functions, from the diagonal of W;
       // computed (and the columns prepared) only for nodes that need it.
@@ -525,6 +553,11 @@ namespace FuzzyContact
       std::vector<ContactStatus> status;
       std::vector<int>           sign;
       unsigned int               iterations = 0;
+
+      // The linear solves: the workspace's (its factor kept between solves)
+      // or this step's own.
+      StatusSolver  own_linear;
+      StatusSolver &linear;
     };
 
   } // namespace

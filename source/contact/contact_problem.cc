@@ -1,9 +1,11 @@
 #include <fuzzycontact/contact/contact_problem.h>
+#include <fuzzycontact/contact/contact_workspace.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -23,6 +25,34 @@ namespace FuzzyContact
           return "slip";
       }
     return "?";
+  }
+
+
+  namespace
+  {
+    // Every FlexibilityOperator's states are drawn from one counter, so no
+    // two operators (nor two values of one) share a state.
+    std::atomic<unsigned long> flexibility_states{0};
+  } // namespace
+
+
+  FlexibilityOperator::FlexibilityOperator()
+      : state_(++flexibility_states)
+  {
+  }
+
+
+  void
+  FlexibilityOperator::changed()
+  {
+    state_ = ++flexibility_states;
+  }
+
+
+  unsigned long
+  FlexibilityOperator::state() const
+  {
+    return state_;
   }
 
 
@@ -179,7 +209,8 @@ namespace FuzzyContact
     const std::vector<GapLoadStage>                     &stages,
     const double                                         load_factor,
     const std::function<ContactState(const LoadStep &)> &solve_step,
-    const RigidMotions                                  *rigid)
+    const RigidMotions                                  *rigid,
+    ContactWorkspace                                    *workspace)
   {
     AssertThrow(!stages.empty(),
                 ExcMessage("A load history needs at least one stage."));
@@ -208,6 +239,8 @@ namespace FuzzyContact
     Vector<double> g_held   = g_initial; // the earlier stages at full load
     Vector<double> e_held(n_motions);
     state.rigid.reinit(n_motions);
+    if (workspace != nullptr)
+      workspace->converged.clear();
     for (unsigned int stage = 0; stage < stages.size(); ++stage)
       {
         const GapLoadStage &current = stages[stage];
@@ -227,7 +260,16 @@ namespace FuzzyContact
                 step.rigid_load = e_held;
                 step.rigid_load.add(step.load_factor, current.rigid_load);
               }
+            if (workspace != nullptr)
+              {
+                step.workspace = workspace;
+                if (step.step <= workspace->start.size() &&
+                    workspace->start[step.step - 1].status.size() == m / 2)
+                  step.start = &workspace->start[step.step - 1];
+              }
             state = solve_step(step);
+            if (workspace != nullptr)
+              workspace->converged.push_back(state);
             iterations += state.iterations;
             residual = std::max(residual, state.residual);
           }
@@ -339,18 +381,25 @@ namespace FuzzyContact
 
 
   double
-  equilibrium_residual(const LoadStep &step, const Vector<double> &p)
+  equilibrium_residual(const LoadStep       &step,
+                       const Vector<double> &p,
+                       const double          force_scale)
   {
     double worst = 0;
     for (unsigned int j = 0; j < step.n_motions(); ++j)
       {
         double sum = step.rigid_load[j], scale = std::abs(step.rigid_load[j]);
+        double largest = 0;
         for (unsigned int i = 0; i < p.size(); ++i)
-          if (p[i] != 0)
-            {
-              sum += step.rigid->gaps(i, j) * p[i];
-              scale += std::abs(step.rigid->gaps(i, j) * p[i]);
-            }
+          {
+            largest = std::max(largest, std::abs(step.rigid->gaps(i, j)));
+            if (p[i] != 0)
+              {
+                sum += step.rigid->gaps(i, j) * p[i];
+                scale += std::abs(step.rigid->gaps(i, j) * p[i]);
+              }
+          }
+        scale += force_scale * largest;
         if (scale > 0)
           worst = std::max(worst, std::abs(sum) / scale);
       }
@@ -361,13 +410,16 @@ namespace FuzzyContact
   void
   check_motions_determined(const LoadStep       &step,
                            const Vector<double> &p,
-                           const std::string    &what)
+                           const std::string    &what,
+                           const double          force_scale)
   {
     double total = 0;
     for (unsigned int j = 0; j < step.n_motions(); ++j)
       total += std::abs(step.rigid_load[j]);
     for (unsigned int k = 0; 2 * k < p.size(); ++k)
       total += std::abs(p[normal_row(k)]);
+    // Forces at the round-off of the problem's force scale are none.
+    total = std::max(total, force_scale);
     for (unsigned int j = 0; j < step.n_motions(); ++j)
       {
         double along = std::abs(step.rigid_load[j]);

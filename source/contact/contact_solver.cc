@@ -11,7 +11,8 @@ namespace FuzzyContact
   ContactSolver::solve(const ContactProblem &problem,
                        const double          load_factor,
                        const unsigned int    n_load_steps,
-                       const std::string    &what) const
+                       const std::string    &what,
+                       ContactWorkspace     *workspace) const
   {
     problem.check();
     const auto step = [&](const LoadStep &load_step) {
@@ -26,7 +27,8 @@ namespace FuzzyContact
                                                       : problem.stages,
                                load_factor,
                                step,
-                               &problem.rigid);
+                               &problem.rigid,
+                               workspace);
   }
 
 

@@ -45,6 +45,18 @@ namespace FuzzyContact
                       "warm-started from their statuses (active set: "
                       "converges on distributed contact in a few sweeps), "
                       "or nothing (none: the paper's regulators alone).");
+    prm.declare_entry("coarse correction warm iterations",
+                      "2",
+                      Patterns::Integer(),
+                      "Iterations of the coarse correction's exact solver "
+                      "from the regulators' statuses; if it has not "
+                      "converged then, it starts again cold (from its own "
+                      "frictionless start).");
+    prm.declare_entry("coarse correction max iterations",
+                      "200",
+                      Patterns::Integer(),
+                      "Iterations of the coarse correction's exact solver "
+                      "started cold, before it gives up with an error.");
     prm.declare_entry("tolerance",
                       "1e-4",
                       Patterns::Double(),
@@ -83,7 +95,16 @@ namespace FuzzyContact
     AssertThrow(n >= 1,
                 ExcMessage("FL2C: max iterations must be at least 1, got " +
                            std::to_string(n) + "."));
-    max_iterations = n;
+    max_iterations          = n;
+    const auto at_least_one = [&](const std::string &key) {
+      const long i = prm.get_integer(key);
+      AssertThrow(i >= 1,
+                  ExcMessage("FL2C: " + key + " must be at least 1, got " +
+                             std::to_string(i) + "."));
+      return static_cast<unsigned int>(i);
+    };
+    coarse_warm_iterations = at_least_one("coarse correction warm iterations");
+    coarse_max_iterations  = at_least_one("coarse correction max iterations");
     prm.leave_subsection();
     check();
   }
@@ -284,10 +305,17 @@ namespace FuzzyContact
                        MamdaniRegulator(parameters.slip_points,
                                         parameters.friction_points)}
       {
-        state.p = step.previous.p;
+        // From the forces of the same step at a neighbouring point, if the
+        // study gave them (contact_workspace.h), else of the previous step.
+        const ContactState &from =
+          step.start != nullptr && step.start->p.size() == 2 * n &&
+              step.start->rigid.size() == step.n_motions()
+            ? *step.start
+            : step.previous;
+        state.p = from.p;
         if (state.p.size() != 2 * n)
           state.p.reinit(2 * n);
-        state.rigid = step.previous.rigid;
+        state.rigid = from.rigid;
         if (state.rigid.size() != step.n_motions())
           state.rigid.reinit(step.n_motions());
         state.status.assign(n, ContactStatus::open);
@@ -313,13 +341,14 @@ namespace FuzzyContact
           monitor(0, interface_residual());
         for (unsigned int it = 1;; ++it)
           {
-            residual =
-              std::max(working_residual(), equilibrium_residual(step, state.p));
+            residual = std::max(working_residual(),
+                                equilibrium_residual(step, state.p, scale()));
             if (residual <= parameters.tolerance ||
                 (!corrected && it - last_check >= 16))
               {
-                residual   = std::max(check_interface(),
-                                    equilibrium_residual(step, state.p));
+                residual =
+                  std::max(check_interface(),
+                           equilibrium_residual(step, state.p, scale()));
                 last_check = it;
               }
             // With the coarse correction, nodes that joined at the check
@@ -649,7 +678,8 @@ namespace FuzzyContact
       {
         std::ostringstream message;
         message << what << ": the fuzzy regulators did not converge in "
-                << parameters.max_iterations << " iterations (load step "
+                << parameters.max_iterations
+                << " iterations (key 'FL2C/max iterations'; load step "
                 << step.step << "); complementarity residual " << residual
                 << ", last force change " << force_change << " N.";
         return message.str();
@@ -674,9 +704,13 @@ namespace FuzzyContact
       // statuses, a few iterations (a poor start may cycle into Murty's
       // one-node-per-iteration rule); else from its own frictionless start.
       const ActiveSetSolver warm{
-        ActiveSetParameters{std::min(1e-10, parameters.tolerance), 2}};
+        ActiveSetParameters{std::min(1e-10, parameters.tolerance),
+                            parameters.coarse_warm_iterations,
+                            "FL2C/coarse correction warm iterations"}};
       const ActiveSetSolver cold{
-        ActiveSetParameters{std::min(1e-10, parameters.tolerance), 200}};
+        ActiveSetParameters{std::min(1e-10, parameters.tolerance),
+                            parameters.coarse_max_iterations,
+                            "FL2C/coarse correction max iterations"}};
     };
   } // namespace
 

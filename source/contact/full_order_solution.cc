@@ -101,11 +101,10 @@ namespace FuzzyContact
                                                                 c_n,
                                                                 c_t);
         const double              worst = *std::max_element(r.begin(), r.end());
+        const double scale = residual_scale(final_state.p, g_free, c_n);
         solution.residual =
-          std::max(worst == 0
-                     ? 0.
-                     : worst / residual_scale(final_state.p, g_free, c_n),
-                   equilibrium_residual(full_load, final_state.p));
+          std::max(worst == 0 ? 0. : worst / scale,
+                   equilibrium_residual(full_load, final_state.p, scale));
         if (solution.residual <= solver.parameters().tolerance ||
             refinement == 3)
           break;

@@ -4,6 +4,7 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/lapack_templates.h>
 
+#include <algorithm>
 #include <cmath>
 
 // LAPACK's condition estimate of an LU factorisation (not wrapped by
@@ -200,18 +201,23 @@ namespace FuzzyContact
 
 
   Vector<double>
-  gaps_of(const FlexibilityOperator       &W,
+  gaps_of(FlexibilityOperator             &W,
           const Vector<double>            &g_free,
           const Vector<double>            &p,
           const std::vector<unsigned int> &columns,
           const LoadStep                  *step,
           const Vector<double>            &a)
   {
-    Vector<double> g = g_free;
+    Vector<double>     g = g_free;
+    const unsigned int m = g.size();
     for (const unsigned int j : columns)
       if (p[j] != 0)
-        for (unsigned int i = 0; i < g.size(); ++i)
-          g[i] += W(i, j) * p[j];
+        {
+          const double *w  = W.column(j);
+          const double  pj = p[j];
+          for (unsigned int i = 0; i < m; ++i)
+            g[i] += w[i] * pj;
+        }
     if (step != nullptr)
       add_rigid_gaps(*step, a, g);
     return g;

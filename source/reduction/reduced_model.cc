@@ -173,6 +173,7 @@ namespace FuzzyContact
     void
     reset()
     {
+      changed();
       for (const unsigned int j : list)
         computed[j] = false;
       list.clear();

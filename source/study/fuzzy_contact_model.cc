@@ -96,6 +96,16 @@ namespace FuzzyContact
       , fuzzy(fuzzy)
       , comm(comm)
   {
+    {
+      // Neighbours are measured in units of the parameters' supports.
+      std::vector<double> widths;
+      for (const FuzzyNumber &number : fuzzy.numbers())
+        {
+          const Interval support = number.alpha_cut(0);
+          widths.push_back(support.upper - support.lower);
+        }
+      warm_starts = WarmStarts(widths);
+    }
     AssertThrow(!scene.contact_pairs.empty(),
                 ExcMessage("The fuzzy contact study needs a scene with a "
                            "contact pair."));
@@ -309,7 +319,9 @@ namespace FuzzyContact
                       ")",
                     [&]() {
                       reduced_model->set_state(state(values));
-                      return outputs->values(reduced_model->solve());
+                      return reduced_from_neighbour(values, [&]() {
+                        return reduced_model->solve();
+                      });
                     });
   }
 
@@ -320,8 +332,27 @@ namespace FuzzyContact
   {
     return at_point(values, "the reduced model (" + solver.name() + ")", [&]() {
       reduced_model->set_state(state(values));
-      return outputs->values(reduced_model->solve(solver));
+      return reduced_from_neighbour(values, [&]() {
+        return reduced_model->solve(solver);
+      });
     });
+  }
+
+
+  std::vector<double>
+  FuzzyContactModel::reduced_from_neighbour(
+    const std::vector<double>              &values,
+    const std::function<ContactSolution()> &solve)
+  {
+    ContactWorkspace                &workspace = reduced_model->workspace();
+    const std::vector<ContactState> *neighbour = warm_starts.nearest(values);
+    if (neighbour != nullptr)
+      workspace.start = *neighbour;
+    else
+      workspace.start.clear();
+    const ContactSolution solution = solve();
+    warm_starts.add(values, workspace.converged);
+    return outputs->values(solution);
   }
 
 

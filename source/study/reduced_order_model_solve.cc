@@ -57,10 +57,13 @@ namespace FuzzyContact
   {
     const std::string  name = what.empty() ? contact_solver.name() : what;
     Timer              clock;
-    const ContactState state =
-      contact_solver.solve(reduced->problem(), 1., n_load_steps, name);
-    ContactSolution s = reduced->solution(state, 1., name);
-    s.n_load_steps    = n_load_steps;
+    const ContactState state = contact_solver.solve(reduced->problem(),
+                                                    1.,
+                                                    n_load_steps,
+                                                    name,
+                                                    &workspace_);
+    ContactSolution    s     = reduced->solution(state, 1., name);
+    s.n_load_steps           = n_load_steps;
     if (!reduced->problem().stages.empty())
       {
         s.n_load_steps = 0;
@@ -69,6 +72,13 @@ namespace FuzzyContact
       }
     s.time = clock.wall_time();
     return s;
+  }
+
+
+  ContactWorkspace &
+  ReducedOrderModel::workspace()
+  {
+    return workspace_;
   }
 
 

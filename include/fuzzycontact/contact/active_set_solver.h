@@ -68,6 +68,11 @@ namespace FuzzyContact
     double tolerance = 1e-10;
     /** Iterations per load step (both phases) before it gives up. */
     unsigned int max_iterations = 200;
+    /**
+     * The key that sets max_iterations, named in the message of a solve
+     * that runs out of iterations.
+     */
+    std::string max_iterations_key = "Exact contact solver/max iterations";
 
     static void
     declare_parameters(ParameterHandler &prm);

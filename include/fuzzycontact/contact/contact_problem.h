@@ -79,6 +79,8 @@ namespace FuzzyContact
 {
   using namespace dealii;
 
+  class ContactWorkspace;
+
   enum class ContactStatus
   {
     open,
@@ -132,6 +134,24 @@ namespace FuzzyContact
     /** W(i, i), whether or not column i was prepared. */
     virtual double
     diagonal(const unsigned int i) = 0;
+    /**
+     * A number that identifies the operator and the present value of its
+     * W: unique to the operator when it is made, and new whenever W
+     * changes (a new state of a reduced model, new stiffness scales), so
+     * that what was computed from W (a factor of a part of it,
+     * closed_set_factor.h) is known to be of another W when it differs.
+     */
+    unsigned long
+    state() const;
+
+  protected:
+    FlexibilityOperator();
+    /** To be called by a derived class whenever its W changes. */
+    void
+    changed();
+
+  private:
+    unsigned long state_;
   };
 
   /** A FlexibilityOperator that holds W as a dense matrix. */
@@ -286,6 +306,13 @@ namespace FuzzyContact
      */
     const RigidMotions *rigid = nullptr;
     Vector<double>      rigid_load;
+    /**
+     * What the solver may keep between solves (contact_workspace.h), and
+     * the state this step should start from (the same step's at a
+     * neighbouring point), if any; both may be null.
+     */
+    ContactWorkspace   *workspace = nullptr;
+    const ContactState *start     = nullptr;
 
     /** The number of free rigid-body motions. */
     unsigned int
@@ -297,7 +324,9 @@ namespace FuzzyContact
    * steps, on top of the earlier stages' loads), all loads times
    * @p load_factor, calling @p solve_step for each step from the state the
    * previous one converged to; returns the last state with the iterations
-   * summed over all steps and the largest residual.
+   * summed over all steps and the largest residual. With a @p workspace,
+   * each step gets it and the start it holds for that step (if any), and
+   * its converged state is left there (contact_workspace.h).
    */
   ContactState
   solve_in_load_steps(
@@ -305,7 +334,8 @@ namespace FuzzyContact
     const std::vector<GapLoadStage>                     &stages,
     const double                                         load_factor,
     const std::function<ContactState(const LoadStep &)> &solve_step,
-    const RigidMotions                                  *rigid = nullptr);
+    const RigidMotions                                  *rigid     = nullptr,
+    ContactWorkspace                                    *workspace = nullptr);
 
   /**
    * The one-stage history: the load in @p n_steps equal increments up to
@@ -362,10 +392,15 @@ namespace FuzzyContact
   /**
    * The relative residual of the equilibrium G^T p + lambda e = 0 of the
    * bodies held by contact alone (see the top of this file); 0 if there
-   * are none.
+   * are none. With a @p force_scale [N] (the complementarity residual's,
+   * residual_scale()), the residual of each motion is relative to at least
+   * that force along it: forces at round-off where the answer is no force
+   * do not count as an imbalance.
    */
   double
-  equilibrium_residual(const LoadStep &step, const Vector<double> &p);
+  equilibrium_residual(const LoadStep       &step,
+                       const Vector<double> &p,
+                       const double          force_scale = 0);
 
   /**
    * Throws, naming @p what and the free motions, if no contact forces in
@@ -397,12 +432,14 @@ namespace FuzzyContact
    * Throws, naming @p what and the motion, if neither the step's load nor
    * the contact forces @p p act along a free motion of a body held by
    * contact alone: its position is then not determined (any position that
-   * does not penetrate solves the problem).
+   * does not penetrate solves the problem). Forces below 1e-12 of
+   * @p force_scale count as none.
    */
   void
   check_motions_determined(const LoadStep       &step,
                            const Vector<double> &p,
-                           const std::string    &what);
+                           const std::string    &what,
+                           const double          force_scale = 0);
 
   /**
    * DoFs whose displacements a solver reports, per component: the

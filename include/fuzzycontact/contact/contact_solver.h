@@ -49,13 +49,15 @@ namespace FuzzyContact
      * All @p n_load_steps proportional load steps up to @p load_factor, or,
      * if @p problem has load stages, the steps of its stages (each with its
      * own number of steps; @p n_load_steps is then not used); see
-     * solve_in_load_steps().
+     * solve_in_load_steps(). With a @p workspace, the steps start where it
+     * says and leave their states in it (contact_workspace.h).
      */
     ContactState
     solve(const ContactProblem &problem,
           const double          load_factor,
           const unsigned int    n_load_steps,
-          const std::string    &what) const;
+          const std::string    &what,
+          ContactWorkspace     *workspace = nullptr) const;
   };
 
   /** The names create_contact_solver() knows, as "fl2c|reduced exact". */

@@ -106,6 +106,12 @@ namespace FuzzyContact
     double tolerance = 1e-4;
     /** Iterations per load step before FL2C gives up. */
     unsigned int max_iterations = 20000;
+    /**
+     * Iterations of the coarse correction's exact solver from the
+     * regulators' statuses, and started cold (then it gives up).
+     */
+    unsigned int coarse_warm_iterations = 2;
+    unsigned int coarse_max_iterations  = 200;
 
     static void
     declare_parameters(ParameterHandler &prm);

@@ -73,7 +73,7 @@ namespace FuzzyContact
    * (the entries of @p columns).
    */
   Vector<double>
-  gaps_of(const FlexibilityOperator       &W,
+  gaps_of(FlexibilityOperator             &W,
           const Vector<double>            &g_free,
           const Vector<double>            &p,
           const std::vector<unsigned int> &columns,

@@ -33,6 +33,7 @@
 #include <fuzzycontact/study/full_order_model.h>
 #include <fuzzycontact/study/observations.h>
 #include <fuzzycontact/study/reduced_order_model.h>
+#include <fuzzycontact/study/warm_starts.h>
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
@@ -232,20 +233,29 @@ namespace FuzzyContact
     SceneState
     state(const std::vector<double> &values) const;
 
+    // The outputs of the reduced model's @p solve() at @p values, the
+    // contact solver started from the states of the nearest point
+    // evaluated before (warm_starts.h), and this point's states kept.
+    std::vector<double>
+    reduced_from_neighbour(const std::vector<double>              &values,
+                           const std::function<ContactSolution()> &solve);
+
     Scene                              scene;
     const FuzzyParameterSet           &fuzzy;
     std::unique_ptr<ContactScene>      bodies;
     std::unique_ptr<Observations>      outputs;
     std::unique_ptr<ReducedOrderModel> reduced_model;
     std::unique_ptr<FullOrderModel>    full_model;
-    std::string                        solver_name;
-    std::string                        skipped_stages;
-    std::vector<std::string>           inert_parameters;
-    MPI_Comm                           comm;
-    MPI_Comm                           reduced_ranks     = MPI_COMM_NULL;
-    bool                               own_reduced_ranks = false;
-    std::vector<unsigned int>          builder; // the rank of each component
-    unsigned int                       n_ranks_building = 1;
+    // The reduced model's contact states at the points evaluated so far.
+    WarmStarts                warm_starts;
+    std::string               solver_name;
+    std::string               skipped_stages;
+    std::vector<std::string>  inert_parameters;
+    MPI_Comm                  comm;
+    MPI_Comm                  reduced_ranks     = MPI_COMM_NULL;
+    bool                      own_reduced_ranks = false;
+    std::vector<unsigned int> builder; // the rank of each component
+    unsigned int              n_ranks_building = 1;
   };
 } // namespace FuzzyContact
 

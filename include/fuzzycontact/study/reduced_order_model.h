@@ -41,6 +41,7 @@
 #define fuzzycontact_study_reduced_order_model_h
 
 #include <fuzzycontact/contact/contact_solver.h>
+#include <fuzzycontact/contact/contact_workspace.h>
 #include <fuzzycontact/fuzzy/fuzzy_number.h>
 #include <fuzzycontact/modal/modal_solver.h>
 #include <fuzzycontact/reanalysis/parameter_independent_reanalysis.h>
@@ -156,6 +157,15 @@ namespace FuzzyContact
     const ContactProblem &
     problem() const;
 
+    /**
+     * What the solves carry from one to the next (contact_workspace.h): the
+     * factor of the closed set, always; the start of each load step, if
+     * set here (the states of a neighbouring point), and the converged
+     * states of the last solve.
+     */
+    ContactWorkspace &
+    workspace();
+
     unsigned int
     n_modes(const unsigned int c) const;
     unsigned int
@@ -199,6 +209,7 @@ namespace FuzzyContact
     std::vector<std::unique_ptr<ComponentModel>> models;
     std::unique_ptr<ReducedContactModel>         reduced;
     std::unique_ptr<ContactSolver>               solver;
+    ContactWorkspace                             workspace_;
     std::string                                  label;
     unsigned int                                 n_load_steps = 1;
   };

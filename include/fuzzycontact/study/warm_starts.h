@@ -1,0 +1,60 @@
+// The contact states of the points a study has evaluated, so that the
+// next point's solve starts from its nearest neighbour's
+// (contact/contact_workspace.h).
+//
+// A point is a vector of parameter values, compared after scaling each
+// coordinate by a width (a fuzzy parameter's support): the neighbour is the
+// nearest point in that scaled Euclidean distance. Only what a solver
+// starts from is kept (statuses, slip directions, forces and free motions'
+// amplitudes per load step), and at most a fixed number of points (the
+// oldest go first); finding the nearest is a scan over them, negligible
+// next to a contact solve.
+
+#ifndef fuzzycontact_study_warm_starts_h
+#define fuzzycontact_study_warm_starts_h
+
+#include <fuzzycontact/contact/contact_problem.h>
+
+#include <cstddef>
+#include <deque>
+#include <vector>
+
+namespace FuzzyContact
+{
+  class WarmStarts
+  {
+  public:
+    /**
+     * @p widths: the scale of each coordinate (a zero width: the coordinate
+     * does not count); @p capacity: how many points are kept.
+     */
+    explicit WarmStarts(const std::vector<double> &widths   = {},
+                        const std::size_t          capacity = 4096);
+
+    /** The load steps' states of the point @p x (a copy of what matters). */
+    void
+    add(const std::vector<double> &x, const std::vector<ContactState> &states);
+
+    /**
+     * The states of the point nearest to @p x, or null if there is none.
+     * Valid until the next add().
+     */
+    const std::vector<ContactState> *
+    nearest(const std::vector<double> &x) const;
+
+    std::size_t
+    size() const;
+
+  private:
+    struct Entry
+    {
+      std::vector<double>       x;
+      std::vector<ContactState> states;
+    };
+    std::vector<double> widths;
+    std::size_t         capacity;
+    std::deque<Entry>   entries;
+  };
+} // namespace FuzzyContact
+
+#endif

@@ -1,0 +1,591 @@
+#include <fuzzycontact/contact/status_solver.h>
+#include <fuzzycontact/contact/status_system.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/lapack_templates.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+// LAPACK's condition estimate of an LU factorisation (not wrapped by
+// deal.II).
+extern "C" void
+dgecon_(const char                    *norm,
+        const dealii::types::blas_int *n,
+        const double                  *a,
+        const dealii::types::blas_int *lda,
+        const double                  *anorm,
+        double                        *rcond,
+        double                        *work,
+        dealii::types::blas_int       *iwork,
+        dealii::types::blas_int       *info);
+
+namespace FuzzyContact
+{
+  namespace
+  {
+    // The system with friction of @p unknowns as a dense column-major N x N
+    // matrix, from W's contiguous columns: per closed node k (unknowns
+    // p_n, p_t at 2i, 2i + 1) its normal equation, a row of W, and its
+    // tangential one, a row of W if it sticks, W_tt (p_t - mu s p_n) = 0 if
+    // it slips; the free motions' columns and equilibrium rows scaled by
+    // @p scale, as in StatusSystem.
+    void
+    gather(FlexibilityOperator              &W,
+           const StatusSolver::Unknowns     &unknowns,
+           const std::vector<ContactStatus> &status,
+           const std::vector<int>           &sign,
+           const std::vector<double>        &mu,
+           const RigidMotions               *rigid,
+           const double                      scale,
+           std::vector<double>              &A)
+    {
+      const std::vector<unsigned int> &closed = unknowns.closed;
+      const unsigned int n_c = closed.size(), m = 2 * n_c, N = unknowns.size();
+      A.assign(std::size_t(N) * N, 0.);
+      // Unknown c's row of W, or -1 where the equation is not W's.
+      std::vector<int> rows(m);
+      for (unsigned int i = 0; i < n_c; ++i)
+        {
+          const unsigned int k = closed[i];
+          rows[2 * i]          = normal_row(k);
+          rows[2 * i + 1] =
+            status[k] == ContactStatus::stick ? int(tangential_row(k)) : -1;
+        }
+      for (unsigned int c = 0; c < m; ++c)
+        {
+          const double *w =
+            W.column(c % 2 == 0 ? normal_row(closed[c / 2])
+                                : tangential_row(closed[c / 2]));
+          double *column = &A[std::size_t(c) * N];
+          for (unsigned int r = 0; r < m; ++r)
+            if (rows[r] >= 0)
+              column[r] = w[rows[r]];
+        }
+      for (unsigned int i = 0; i < n_c; ++i)
+        if (rows[2 * i + 1] < 0)
+          {
+            const unsigned int k = closed[i];
+            const double       d = W.diagonal(tangential_row(k));
+            A[std::size_t(2 * i + 1) * N + 2 * i + 1] = d;
+            A[std::size_t(2 * i) * N + 2 * i + 1]     = -d * mu[k] * sign[k];
+          }
+      if (unknowns.n_motions == 0)
+        return;
+      const FullMatrix<double> &G = rigid->gaps;
+      for (unsigned int j = 0; j < unknowns.n_motions; ++j)
+        {
+          double *column = &A[std::size_t(m + j) * N];
+          for (unsigned int r = 0; r < m; ++r)
+            if (rows[r] >= 0)
+              column[r] = scale * G(rows[r], j);
+          for (unsigned int c = 0; c < m; ++c)
+            A[std::size_t(c) * N + m + j] =
+              scale * G(c % 2 == 0 ? normal_row(closed[c / 2])
+                                   : tangential_row(closed[c / 2]),
+                        j);
+        }
+    }
+
+    // A dense column-major matrix for GMRES.
+    class DenseOperator
+    {
+    public:
+      DenseOperator(const std::vector<double> &A, const unsigned int N)
+          : A(A)
+          , N(N)
+      {
+      }
+      void
+      vmult(Vector<double> &dst, const Vector<double> &src) const
+      {
+        const types::blas_int n = N, one = 1;
+        const double          alpha = 1, beta = 0;
+        gemv("N",
+             &n,
+             &n,
+             &alpha,
+             A.data(),
+             &n,
+             src.data(),
+             &one,
+             &beta,
+             dst.data(),
+             &one);
+      }
+
+    private:
+      const std::vector<double> &A;
+      const unsigned int         N;
+    };
+
+    // Dense LU factors as a preconditioner (or an exact solver).
+    class LUPreconditioner
+    {
+    public:
+      LUPreconditioner(const std::vector<double>          &lu,
+                       const std::vector<types::blas_int> &pivots)
+          : lu(lu)
+          , pivots(pivots)
+      {
+      }
+      void
+      vmult(Vector<double> &dst, const Vector<double> &src) const
+      {
+        dst                     = src;
+        const types::blas_int n = pivots.size(), one = 1;
+        types::blas_int       info = 0;
+        getrs("N",
+              &n,
+              &one,
+              lu.data(),
+              &n,
+              pivots.data(),
+              dst.data(),
+              &n,
+              &info);
+        Assert(info == 0, ExcInternalError());
+      }
+
+    private:
+      const std::vector<double>          &lu;
+      const std::vector<types::blas_int> &pivots;
+    };
+
+    // The symmetric system P = [W_BB, G'_B; G'_B^T, 0] (G' = scale G) by
+    // block elimination on the Cholesky factor: with Y = W_BB^{-1} G'_B and
+    // the Schur complement S = G'_B^T Y, a = S^+ (Y^T u - v) and x =
+    // W_BB^{-1} u - Y a. S is singular where the closed rows do not hold a
+    // motion (the normal rows of a flat interface do not hold the sliding
+    // along it): its pseudo-inverse leaves that amplitude at zero, the
+    // minimum-norm answer of StatusSystem's dense path.
+    class BlockPreconditioner
+    {
+    public:
+      BlockPreconditioner(const ClosedSetFactor &factor,
+                          const RigidMotions    *rigid,
+                          const double           scale)
+          : factor(factor)
+      {
+        const std::vector<unsigned int> &rows = factor.rows();
+        const unsigned int               m    = rows.size();
+        const unsigned int n_m = rigid == nullptr ? 0 : rigid->size();
+        if (n_m == 0)
+          return;
+        const FullMatrix<double> &G = rigid->gaps;
+        Y.reinit(n_m, m);
+        Vector<double> y(m);
+        for (unsigned int j = 0; j < n_m; ++j)
+          {
+            for (unsigned int c = 0; c < m; ++c)
+              y[c] = scale * G(rows[c], j);
+            factor.solve(y);
+            for (unsigned int c = 0; c < m; ++c)
+              Y(j, c) = y[c];
+          }
+        LAPACKFullMatrix<double> S(n_m, n_m);
+        for (unsigned int i = 0; i < n_m; ++i)
+          for (unsigned int j = 0; j < n_m; ++j)
+            {
+              double s = 0;
+              for (unsigned int c = 0; c < m; ++c)
+                s += scale * G(rows[c], i) * Y(j, c);
+              S(i, j) = s;
+            }
+        S.compute_inverse_svd(1e-10);
+        S_inverse.reinit(n_m, n_m);
+        Vector<double> e(n_m), column(n_m);
+        for (unsigned int j = 0; j < n_m; ++j)
+          {
+            e    = 0;
+            e[j] = 1;
+            S.vmult(column, e);
+            for (unsigned int i = 0; i < n_m; ++i)
+              S_inverse(i, j) = column[i];
+          }
+      }
+
+      void
+      vmult(Vector<double> &dst, const Vector<double> &src) const
+      {
+        const unsigned int m = factor.size(), n_m = Y.m();
+        Vector<double>     x(m);
+        for (unsigned int c = 0; c < m; ++c)
+          x[c] = src[c];
+        if (n_m > 0)
+          {
+            Vector<double> r(n_m), a(n_m);
+            for (unsigned int j = 0; j < n_m; ++j)
+              {
+                double s = 0;
+                for (unsigned int c = 0; c < m; ++c)
+                  s += Y(j, c) * src[c];
+                r[j] = s - src[m + j];
+              }
+            S_inverse.vmult(a, r);
+            factor.solve(x);
+            for (unsigned int j = 0; j < n_m; ++j)
+              {
+                for (unsigned int c = 0; c < m; ++c)
+                  x[c] -= Y(j, c) * a[j];
+                dst[m + j] = a[j];
+              }
+          }
+        else
+          factor.solve(x);
+        for (unsigned int c = 0; c < m; ++c)
+          dst[c] = x[c];
+      }
+
+    private:
+      const ClosedSetFactor &factor;
+      FullMatrix<double>     Y; // row j: W_BB^{-1} G'_B e_j
+      FullMatrix<double>     S_inverse;
+    };
+
+    // GMRES on the system @p A of size N, preconditioned by @p P, from
+    // zero; false if it does not reach the tolerance in the steps allowed.
+    template <class Preconditioner>
+    bool
+    gmres(const std::vector<double> &A,
+          const Preconditioner      &P,
+          const Vector<double>      &b,
+          Vector<double>            &x,
+          StatusSolver::Counts      &counts)
+    {
+      const DenseOperator         operator_A(A, b.size());
+      SolverControl               control(StatusSolver::gmres_max_steps,
+                            StatusSolver::gmres_tolerance * b.l2_norm(),
+                            false,
+                            false);
+      SolverGMRES<Vector<double>> solver(
+        control,
+        SolverGMRES<Vector<double>>::AdditionalData(
+          StatusSolver::gmres_max_steps + 2,
+          true));
+      x.reinit(b.size());
+      ++counts.gmres;
+      try
+        {
+          solver.solve(operator_A, x, b, P);
+        }
+      catch (const SolverControl::NoConvergence &)
+        {
+          counts.gmres_steps += control.last_step();
+          return false;
+        }
+      counts.gmres_steps += control.last_step();
+      return true;
+    }
+  } // namespace
+
+
+  void
+  StatusSolver::clear()
+  {
+    factor_.clear();
+    lu_unknowns = Unknowns();
+    lu_key.clear();
+    lu.clear();
+    pivots.clear();
+  }
+
+
+  const StatusSolver::Counts &
+  StatusSolver::counts() const
+  {
+    return counts_;
+  }
+
+
+  const ClosedSetFactor &
+  StatusSolver::factor() const
+  {
+    return factor_;
+  }
+
+
+  bool
+  StatusSolver::solve_symmetric(FlexibilityOperator             &W,
+                                const std::vector<unsigned int> &B,
+                                const RigidMotions              *rigid,
+                                const double                     scale,
+                                const Vector<double>            &b,
+                                Vector<double>                  &x)
+  {
+    // The factor's rows, compared with B as sets.
+    std::vector<unsigned int> out, in;
+    std::vector<bool>         wanted(W.size(), false);
+    for (const unsigned int r : B)
+      {
+        wanted[r] = true;
+        if (factor_.position(r) < 0)
+          in.push_back(r);
+      }
+    for (const unsigned int r : factor_.rows())
+      if (!wanted[r])
+        out.push_back(r);
+    const bool stale       = factor_.size() > 0 && factor_.state() != W.state();
+    const unsigned int n_m = rigid == nullptr ? 0 : rigid->size();
+
+    // b in the factor's order, and x back in B's.
+    const auto solve_on_factor = [&](const bool exact) {
+      const unsigned int m = B.size(), N = m + n_m;
+      Vector<double>     y(N), z(N);
+      for (unsigned int c = 0; c < m; ++c)
+        y[factor_.position(B[c])] = b[c];
+      for (unsigned int j = m; j < N; ++j)
+        y[j] = b[j];
+      const BlockPreconditioner P(factor_, rigid, scale);
+      if (exact)
+        P.vmult(z, y);
+      else
+        {
+          // The system at the current W, in the factor's order.
+          const std::vector<unsigned int> &rows = factor_.rows();
+          std::vector<double>              A(std::size_t(N) * N, 0.);
+          for (unsigned int c = 0; c < m; ++c)
+            {
+              const double *w = W.column(rows[c]);
+              for (unsigned int r = 0; r < m; ++r)
+                A[std::size_t(c) * N + r] = w[rows[r]];
+            }
+          for (unsigned int j = 0; j < n_m; ++j)
+            for (unsigned int c = 0; c < m; ++c)
+              A[std::size_t(m + j) * N + c] = A[std::size_t(c) * N + m + j] =
+                scale * rigid->gaps(rows[c], j);
+          if (!gmres(A, P, y, z, counts_))
+            return false;
+        }
+      x.reinit(N);
+      for (unsigned int c = 0; c < m; ++c)
+        x[c] = z[factor_.position(B[c])];
+      for (unsigned int j = m; j < N; ++j)
+        x[j] = z[j];
+      return true;
+    };
+
+    // The same rows at another W: the old factor preconditions GMRES.
+    if (stale && in.empty() && out.empty() && solve_on_factor(false))
+      return true;
+    // Many rows to change, or another W: a new factorisation; else updates.
+    if (stale || out.size() + in.size() > 8 + B.size() / 32)
+      {
+        if (!factor_.reset(W, B))
+          return false;
+      }
+    else
+      {
+        // Rows out from the last one first (the cheapest updates).
+        std::sort(out.begin(), out.end(), [this](const auto r, const auto s) {
+          return factor_.position(r) > factor_.position(s);
+        });
+        for (const unsigned int r : out)
+          factor_.erase(r);
+        for (const unsigned int r : in)
+          if (!factor_.insert(W, r))
+            {
+              if (!factor_.reset(W, B))
+                return false;
+              break;
+            }
+      }
+    return solve_on_factor(true);
+  }
+
+
+  bool
+  StatusSolver::solve_general(FlexibilityOperator              &W,
+                              const Unknowns                   &unknowns,
+                              const std::vector<ContactStatus> &status,
+                              const std::vector<int>           &sign,
+                              const std::vector<double>        &mu,
+                              const RigidMotions               *rigid,
+                              const double                      scale,
+                              const Vector<double>             &b,
+                              Vector<double>                   &x)
+  {
+    // What the equations are: per closed node its tangential equation
+    // (sticking, or mu s of slipping), and the scale.
+    std::vector<double> key;
+    for (const unsigned int k : unknowns.closed)
+      key.push_back(status[k] == ContactStatus::stick
+                      ? std::numeric_limits<double>::infinity()
+                      : mu[k] * sign[k]);
+    key.push_back(scale);
+    const bool kept = !lu.empty() && unknowns == lu_unknowns;
+    if (kept && key == lu_key && lu_state == W.state())
+      {
+        LUPreconditioner(lu, pivots).vmult(x, b);
+        return true;
+      }
+    std::vector<double> &A = matrix;
+    gather(W, unknowns, status, sign, mu, rigid, scale, A);
+    // Other statuses of a few nodes, another W or other friction
+    // coefficients: the kept factors precondition GMRES. If that took more
+    // than a few steps, the factors are made anew for this system (the
+    // next solve, at a neighbouring point or the next iteration, is then
+    // close to them again).
+    const unsigned long steps_before = counts_.gmres_steps;
+    const bool          answered =
+      kept && gmres(A, LUPreconditioner(lu, pivots), b, x, counts_);
+    if (answered && counts_.gmres_steps - steps_before <= gmres_refresh_steps)
+      return true;
+    // A new factorisation, kept.
+    ++counts_.lu;
+    const types::blas_int N     = unknowns.size();
+    double                norm1 = 0;
+    for (types::blas_int j = 0; j < N; ++j)
+      {
+        double column = 0;
+        for (types::blas_int i = 0; i < N; ++i)
+          column += std::abs(A[std::size_t(j) * N + i]);
+        norm1 = std::max(norm1, column);
+      }
+    lu = A;
+    pivots.resize(N);
+    types::blas_int info = 0;
+    getrf(&N, &N, lu.data(), &N, pivots.data(), &info);
+    double rcond = 0;
+    if (info == 0)
+      {
+        std::vector<double>          work(4 * N);
+        std::vector<types::blas_int> iwork(N);
+        const char                   norm = '1';
+        dgecon_(&norm,
+                &N,
+                lu.data(),
+                &N,
+                &norm1,
+                &rcond,
+                work.data(),
+                iwork.data(),
+                &info);
+      }
+    if (!(rcond > 1e-13))
+      {
+        lu.clear();
+        return answered;
+      }
+    lu_unknowns = unknowns;
+    lu_key      = key;
+    lu_state    = W.state();
+    if (!answered)
+      {
+        x.reinit(b.size());
+        LUPreconditioner(lu, pivots).vmult(x, b);
+      }
+    return true;
+  }
+
+
+  void
+  StatusSolver::solve(FlexibilityOperator              &W,
+                      const std::vector<ContactStatus> &status,
+                      const std::vector<int>           &sign,
+                      const std::vector<double>        &mu,
+                      const RigidMotions               *rigid,
+                      const Vector<double>             &target,
+                      const Vector<double>             &load,
+                      Vector<double>                   &p,
+                      Vector<double>                   &a)
+  {
+    ++counts_.solves;
+    const unsigned int n   = status.size();
+    const unsigned int n_m = rigid == nullptr ? 0 : rigid->size();
+    AssertDimension(target.size(), 2 * n);
+    // The closed nodes; the free motions scaled by the closed rows' mean
+    // flexibility (StatusSystem's scale).
+    Unknowns unknowns;
+    unknowns.n_motions = n_m;
+    double sum         = 0;
+    bool   friction    = false;
+    for (unsigned int k = 0; k < n; ++k)
+      if (status[k] != ContactStatus::open)
+        {
+          unknowns.closed.push_back(k);
+          sum += W.diagonal(normal_row(k));
+          friction = friction || mu[k] > 0;
+        }
+    const unsigned int n_c   = unknowns.closed.size();
+    const double       scale = n_c == 0 ? 1. : sum / n_c;
+
+    bool solved = false;
+    p.reinit(2 * n);
+    a.reinit(n_m);
+    if (n_c > 0 && !friction)
+      {
+        // Normal rows only: p_t = 0.
+        std::vector<unsigned int> B;
+        Vector<double>            b(n_c + n_m), x;
+        for (unsigned int i = 0; i < n_c; ++i)
+          {
+            B.push_back(normal_row(unknowns.closed[i]));
+            b[i] = target[B[i]];
+          }
+        for (unsigned int j = 0; j < n_m; ++j)
+          b[n_c + j] = -scale * load[j];
+        if ((solved = solve_symmetric(W, B, rigid, scale, b, x)))
+          {
+            for (unsigned int i = 0; i < n_c; ++i)
+              p[B[i]] = x[i];
+            for (unsigned int j = 0; j < n_m; ++j)
+              a[j] = scale * x[n_c + j];
+          }
+      }
+    else if (n_c > 0)
+      {
+        Vector<double> b(unknowns.size()), x;
+        for (unsigned int i = 0; i < n_c; ++i)
+          {
+            const unsigned int k = unknowns.closed[i];
+            b[2 * i]             = target[normal_row(k)];
+            b[2 * i + 1] =
+              status[k] == ContactStatus::stick ? target[tangential_row(k)] : 0;
+          }
+        for (unsigned int j = 0; j < n_m; ++j)
+          b[2 * n_c + j] = -scale * load[j];
+        if ((solved = solve_general(W,
+                                    unknowns,
+                                    status,
+                                    sign,
+                                    mu,
+                                    rigid,
+                                    scale,
+                                    b,
+                                    x)))
+          {
+            // A slipping node's friction force is mu s p_n, exactly (the
+            // solve gives it to round-off: zero must stay zero without
+            // friction).
+            for (unsigned int i = 0; i < n_c; ++i)
+              {
+                const unsigned int k = unknowns.closed[i];
+                p[normal_row(k)]     = x[2 * i];
+                p[tangential_row(k)] = status[k] == ContactStatus::stick
+                                         ? x[2 * i + 1]
+                                         : mu[k] * sign[k] * x[2 * i];
+              }
+            for (unsigned int j = 0; j < n_m; ++j)
+              a[j] = scale * x[2 * n_c + j];
+          }
+      }
+    if (!solved)
+      {
+        // Numerically singular (or nothing closed): least squares.
+        ++counts_.pseudo_inverse;
+        const StatusSystem system(W, status, sign, mu, rigid);
+        Vector<double>     rhs(system.rows.size());
+        for (unsigned int r = 0; r < rhs.size(); ++r)
+          rhs[r] = target[system.rows[r]];
+        const Vector<double> y = system.solve(rhs, load);
+        p                      = system.forces(y, status, sign, mu);
+        a                      = system.amplitudes(y);
+      }
+  }
+} // namespace FuzzyContact
