@@ -5,6 +5,7 @@
 #include <fuzzycontact/base/input.h>
 #include <fuzzycontact/fuzzy/bound_proof.h>
 #include <fuzzycontact/fuzzy/extension_principle.h>
+#include <fuzzycontact/fuzzy/feasible_region.h>
 #include <fuzzycontact/fuzzy/fuzzy_number.h>
 #include <fuzzycontact/fuzzy/fuzzy_parameters.h>
 #include <fuzzycontact/fuzzy/global_stage.h>
@@ -16,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include "test_utilities.h"
+#include <array>
 #include <cmath>
 #include <memory>
 #include <set>
@@ -361,8 +363,9 @@ TEST(IntervalMethods, LocalOptimumTrapIsCaughtByTheVertexCheck)
   };
   const std::vector<double> alpha = {0, 1};
   OptimisationSettings      with = closed_form_settings(), without = with;
-  without.fallback      = false;
-  without.global_points = 0;
+  without.fallback           = false;
+  without.global_points_auto = false;
+  without.global_points      = 0;
   const auto o =
     OptimisationMethod(with).bounds(parameters, alpha, response, {"S"}, self);
   EXPECT_NEAR(o.bounds[0][0].lower, -1., 1e-12);
@@ -443,10 +446,12 @@ TEST(IntervalMethods, KinkedMaximumIsFoundAndReported)
           EXPECT_EQ(q.where, "boundary") << "alpha = " << alpha[l];
           EXPECT_EQ(q.kinks, std::vector<unsigned int>{0});
           EXPECT_TRUE(q.refined);
-          EXPECT_LT(q.last_change, 1e-4);
-          // the last step polled: the smallest halving of 1/16 >= 1e-6
-          EXPECT_GE(q.final_step, 1e-6);
+          // the pattern search stopped converged: three halvings below the
+          // refinement step (1e-6) in a row improved nothing
+          EXPECT_TRUE(q.search_converged);
+          EXPECT_EQ(q.last_change, 0.);
           EXPECT_LT(q.final_step, 2e-6);
+          EXPECT_TRUE(q.converged) << "alpha = " << alpha[l];
         }
       else
         EXPECT_EQ(q.where, "vertex") << "alpha = " << alpha[l];
@@ -473,25 +478,43 @@ TEST(IntervalMethods, KinkedMaximumIsFoundAndReported)
   EXPECT_GT(reference_short, 0.01);
 }
 
-// The design: one point in every stratum of every coordinate, the same for
-// the same seed, another for another seed.
-TEST(IntervalMethods, LatinHypercubeFillsEveryStratum)
+// The design is a (t, m, d)-net of 2^m points: one in every stratum of
+// every coordinate and, the first two Sobol coordinates being a (0, m,
+// 2)-net, one in every elementary box 2^-a x 2^-(m - a) of them (random
+// linear scrambling and a digital shift keep both); the same for the same
+// seed, another for another.
+TEST(GlobalStage, ScrambledSobolIsANet)
 {
-  const auto design = LocalOptimisation::latin_hypercube(16, 3, 7);
-  ASSERT_EQ(design.size(), 16u);
+  using namespace LocalOptimisation;
+  const unsigned int m = 6, n = 1u << m;
+  const auto         design = scrambled_sobol(n, 3, 7);
+  ASSERT_EQ(design.size(), n);
   for (unsigned int d = 0; d < 3; ++d)
     {
       std::set<unsigned int> strata;
       for (const auto &x : design)
         {
-          EXPECT_GE(x[d], 0.);
+          EXPECT_GT(x[d], 0.);
           EXPECT_LT(x[d], 1.);
-          strata.insert(static_cast<unsigned int>(x[d] * 16));
+          strata.insert(static_cast<unsigned int>(x[d] * n));
         }
-      EXPECT_EQ(strata.size(), 16u);
+      EXPECT_EQ(strata.size(), n) << "coordinate " << d;
     }
-  EXPECT_EQ(LocalOptimisation::latin_hypercube(16, 3, 7)[5], design[5]);
-  EXPECT_NE(LocalOptimisation::latin_hypercube(16, 3, 8)[5], design[5]);
+  for (unsigned int a = 0; a <= m; ++a)
+    {
+      std::set<std::pair<unsigned int, unsigned int>> boxes;
+      for (const auto &x : design)
+        boxes.insert({static_cast<unsigned int>(x[0] * (1u << a)),
+                      static_cast<unsigned int>(x[1] * (1u << (m - a)))});
+      EXPECT_EQ(boxes.size(), n) << "boxes 2^-" << a << " x 2^-" << m - a;
+    }
+  EXPECT_EQ(scrambled_sobol(n, 3, 7)[5], design[5]);
+  EXPECT_NE(scrambled_sobol(n, 3, 8)[5], design[5]);
+  // The default size grows with the number of parameters, a power of two.
+  EXPECT_EQ(default_design_points(1), 32u);
+  EXPECT_EQ(default_design_points(2), 64u);
+  EXPECT_EQ(default_design_points(3), 128u);
+  EXPECT_EQ(default_design_points(5), 256u);
 }
 
 // A local optimisation stopped by its iteration limit with the optimum
@@ -626,7 +649,7 @@ TEST(GlobalStage, FixedPointsAreThePointsOfTheStageButItsSeeds)
     return std::vector<double>{p[0] * p[0] - 0.3 * p[1]};
   });
   const Normalisation            normalisation(parameters);
-  const auto                     design = latin_hypercube(8, 2, 3);
+  const auto                     design = scrambled_sobol(8, 2, 3);
   for (const double alpha : {0., 0.5, 1.})
     {
       const auto [lo, hi] = normalisation.box(parameters, alpha);
@@ -719,6 +742,200 @@ TEST(IntervalMethods, EachMethodThroughTheInterfaceIsExactWhenMonotone)
   EXPECT_EQ(names.size(), 3u); // three different names
 }
 
+// Two wells of different depth: the design's basins are told apart
+// (nearest-better roots, confirmed by the hill-valley test) and the local
+// searches start in each, the deeper first; a response with one basin (a
+// plane) gets one start, whatever the roots of its clustering.
+TEST(GlobalStage, StartsComeFromDistinctBasins)
+{
+  using namespace LocalOptimisation;
+  const std::vector<FuzzyNumber> parameters =
+    {FuzzyNumber::triangular(0, 0.5, 1), FuzzyNumber::triangular(0, 0.5, 1)};
+  const Normalisation normalisation(parameters);
+  const auto [lo, hi] = normalisation.box(parameters, 0.);
+  const auto design   = scrambled_sobol(128, 2, 1);
+  const auto well     = [](const std::vector<double> &p,
+                       const double               x,
+                       const double               y,
+                       const double               depth) {
+    return depth *
+           std::exp(-(std::pow(p[0] - x, 2) + std::pow(p[1] - y, 2)) / 0.02);
+  };
+  EvaluationCache two([&](const std::vector<double> &p) {
+    return std::vector<double>{-well(p, 0.25, 0.3, 1.) -
+                               well(p, 0.75, 0.7, 0.8)};
+  });
+  OutputObjective wells(two, normalisation, 0, 1., 1., 1e-4, lo, hi);
+  const auto      stage = global_stage(wells, design, {}, lo, hi);
+  const Starts starts = basin_starts(wells, stage.candidates, lo, hi, 3, 1e-12);
+  ASSERT_EQ(starts.points.size(), 2u);
+  EXPECT_GE(starts.n_roots, 2u);
+  const auto near = [](const VectorType &x, const double a, const double b) {
+    return std::hypot(x[0] - a, x[1] - b) < 0.15;
+  };
+  EXPECT_TRUE(near(starts.points[0].x, 0.25, 0.3)) << starts.points[0].x;
+  EXPECT_TRUE(near(starts.points[1].x, 0.75, 0.7)) << starts.points[1].x;
+
+  EvaluationCache plane([](const std::vector<double> &p) {
+    return std::vector<double>{p[0] + 2 * p[1]};
+  });
+  OutputObjective flat(plane, normalisation, 0, 1., 1., 1e-4, lo, hi);
+  const auto      one = global_stage(flat, design, {}, lo, hi);
+  EXPECT_EQ(basin_starts(flat, one.candidates, lo, hi, 3, 1e-12).points.size(),
+            1u);
+}
+
+namespace
+{
+  // A ridge of kinks across the coordinate directions and their
+  // diagonals: S = p0 + p1 - 5 |p1 - 0.3 - 0.4 p0| on [0, 1]^2 falls along
+  // each of them from any point of the ridge p1 = 0.3 + 0.4 p0, and rises
+  // along the ridge to its maximum 1.7 at (1, 0.7). The shape of a
+  // friction force at the kink where a contact starts to stick, which moves
+  // with two parameters at once.
+  std::vector<double>
+  ridge(const std::vector<double> &p)
+  {
+    return {p[0] + p[1] - 5 * std::abs(p[1] - 0.3 - 0.4 * p[0])};
+  }
+} // namespace
+
+// A compass search (coordinates and diagonals) started on the ridge would
+// not move; the turned directions find the way along it, to the maximum
+// within 1e-3 of the range (4.2), and the search stops converged. The
+// optimisation method finds the same bound and calls it converged.
+TEST(GlobalStage, PatternSearchFollowsARidgeOfKinks)
+{
+  using namespace LocalOptimisation;
+  const std::vector<FuzzyNumber> parameters =
+    {FuzzyNumber::triangular(0, 0.5, 1), FuzzyNumber::triangular(0, 0.5, 1)};
+  const Normalisation normalisation(parameters);
+  const auto [lo, hi] = normalisation.box(parameters, 0.);
+  EvaluationCache cache(ridge);
+  OutputObjective objective(cache, normalisation, 0, -1., 1., 1e-4, lo, hi);
+  VectorType      x(2);
+  x[0]             = 0.2;
+  x[1]             = 0.38;
+  double     value = objective.at(x);
+  const auto search =
+    pattern_search(objective, x, value, lo, hi, 1. / 16, 1e-6, 1e-12);
+  const double range = 1.7 - (-2.5);
+  EXPECT_NEAR(-value, 1.7, 1e-3 * range) << x;
+  EXPECT_TRUE(search.converged);
+
+  const auto o = OptimisationMethod(closed_form_settings())
+                   .bounds(parameters, {0.}, ridge, {"S"}, self);
+  EXPECT_NEAR(o.bounds[0][0].upper, 1.7, 1e-3 * range);
+  EXPECT_NEAR(o.bounds[0][0].lower, -2.5, 1e-9);
+  EXPECT_TRUE(o.upper_quality[0][0].converged) << o.upper_quality[0][0].where;
+  EXPECT_TRUE(o.lower_quality[0][0].converged);
+}
+
+namespace
+{
+  // A response without a solution on part of the box, like a block held
+  // by friction alone: p0 a friction coefficient, p1 a load; no solution
+  // where p0 < 0.1 + 0.005 p1 (a convex set of loads per friction
+  // coefficient, growing with it: the vertices of a box decide). Outputs
+  // S0 = p0 p1 and S1 = p1.
+  const std::vector<FuzzyNumber> sliding_parameters = {
+    FuzzyNumber::triangular(0.1, 0.2, 0.3),
+    FuzzyNumber::triangular(10, 15, 20)};
+
+  bool
+  holds(const std::vector<double> &p)
+  {
+    return p[0] >= 0.1 + 0.005 * p[1];
+  }
+
+  std::vector<double>
+  sliding_response(const std::vector<double> &p)
+  {
+    if (!holds(p))
+      return {};
+    return {p[0] * p[1], p[1]};
+  }
+} // namespace
+
+// Every method bounds the outputs over the part of each box with a
+// solution and counts the points without one; the feasible region's
+// membership (sliding possible below alpha = 0.8, where p0's lower end
+// 0.1 + 0.1 alpha meets 0.1 + 0.005 p1's upper end 20 - 5 alpha) and where
+// it starts (p0 = 0.18, p1 = 16) are the closed form's.
+TEST(IntervalMethods, PointsWithoutASolutionAreLeftOut)
+{
+  const auto alpha = alpha_levels(6);
+  // Over the part with a solution: S0 from p1's lower end at the larger of
+  // p0's lower end and the edge, to both upper ends; S1 over p1's cut.
+  const auto exact = [](const double a) {
+    const auto b = alpha_box(sliding_parameters, a);
+    return std::array<Interval, 2>{
+      {Interval{b[1].lower * std::max(b[0].lower, 0.1 + 0.005 * b[1].lower),
+                b[0].upper * b[1].upper},
+       Interval{b[1].lower, b[1].upper}}};
+  };
+  const double range = 6. - 1.5;
+  const auto   o =
+    OptimisationMethod(closed_form_settings())
+      .bounds(sliding_parameters, alpha, sliding_response, {"S0", "S1"}, self);
+  const auto v = VertexMethod().bounds(sliding_parameters,
+                                       alpha,
+                                       sliding_response,
+                                       {"S0", "S1"},
+                                       self);
+  const auto e = ExtensionPrinciple(11).bounds(sliding_parameters,
+                                               alpha,
+                                               sliding_response,
+                                               {"S0", "S1"},
+                                               self);
+  for (unsigned int l = 0; l < alpha.size(); ++l)
+    {
+      const auto x = exact(alpha[l]);
+      EXPECT_NEAR(o.bounds[0][l].lower, x[0].lower, 1e-6 * range)
+        << "alpha = " << alpha[l];
+      EXPECT_NEAR(o.bounds[0][l].upper, x[0].upper, 1e-12 * range);
+      EXPECT_NEAR(o.bounds[1][l].lower, x[1].lower, 1e-12);
+      EXPECT_NEAR(o.bounds[1][l].upper, x[1].upper, 1e-12);
+      // every argument has a solution
+      EXPECT_TRUE(holds(o.argmin[0][l]));
+      EXPECT_TRUE(holds(o.argmax[0][l]));
+      // the sampled methods lie inside, and count the points left out
+      EXPECT_GE(e.bounds[0][l].lower, x[0].lower - 1e-12);
+      EXPECT_GE(v.bounds[0][l].lower, x[0].lower - 1e-12);
+      const bool sliding = alpha[l] < 0.8 - 1e-12;
+      EXPECT_EQ(v.n_infeasible[l] > 0, sliding) << "alpha = " << alpha[l];
+      EXPECT_EQ(e.n_infeasible[l] > 0, sliding) << "alpha = " << alpha[l];
+      EXPECT_EQ(o.n_infeasible[l] > 0, sliding) << "alpha = " << alpha[l];
+    }
+  // The vertex method's samples in the support's box: the vertices of
+  // every level, 5 x 4 + 1; without a solution (0.1 + 0.1 alpha, 10 + 5
+  // alpha) for alpha < 2/3 and (0.1 + 0.1 alpha, 20 - 5 alpha) for alpha <
+  // 0.8: 4 + 4 of them.
+  EXPECT_EQ(v.n_points[0], 21u);
+  EXPECT_EQ(v.n_infeasible[0], 8u);
+  // the lower bound of S0 lies on the edge of the part with a solution
+  EXPECT_EQ(o.lower_quality[0][0].edge, std::vector<unsigned int>{0});
+
+  const FeasibleRegion region =
+    feasible_region(sliding_parameters, alpha, holds, 64);
+  EXPECT_TRUE(region.possible);
+  EXPECT_TRUE(region.vertices_decide);
+  EXPECT_NEAR(region.membership, 0.8, 1e-10);
+  ASSERT_EQ(region.starts_at.size(), 2u);
+  EXPECT_NEAR(region.starts_at[0], 0.18, 1e-10);
+  EXPECT_NEAR(region.starts_at[1], 16., 1e-9);
+  // at the support: (0.1, 10) has no solution; along p0 it starts at 0.15
+  // (along p1 the neighbour (0.1, 20) has none either); the share of the
+  // box with one is 1 - 0.075 / 0.2 = 0.625 (a Sobol estimate)
+  const LevelFeasibility &support = region.levels[0];
+  EXPECT_TRUE(support.possible);
+  ASSERT_EQ(support.boundary.size(), 1u);
+  EXPECT_EQ(support.boundary[0].parameter, 0u);
+  EXPECT_NEAR(support.boundary[0].point[0], 0.15, 1e-9);
+  EXPECT_NEAR(support.feasible_fraction(), 0.625, 0.03);
+  EXPECT_FALSE(region.levels.back().possible);
+}
+
 // One default per setting, stated once: the parameter file's defaults are
 // those of the struct.
 TEST(IntervalMethods, OptimisationDefaultsOfTheParameterFileAreTheStructs)
@@ -735,6 +952,11 @@ TEST(IntervalMethods, OptimisationDefaultsOfTheParameterFileAreTheStructs)
   parsed.interior_tolerance     = 0.5;
   parsed.response_tolerance     = 1e-3;
   parsed.fallback               = false;
+  parsed.global_points_auto     = false;
+  parsed.global_points          = 5;
+  parsed.global_time_limit      = 1;
+  parsed.local_starts           = 9;
+  parsed.refinement_step        = 0.01;
   parsed.parse_parameters(prm);
   const OptimisationSettings defaults;
   EXPECT_EQ(parsed.algorithm, defaults.algorithm);
@@ -745,6 +967,27 @@ TEST(IntervalMethods, OptimisationDefaultsOfTheParameterFileAreTheStructs)
   EXPECT_EQ(parsed.interior_tolerance, defaults.interior_tolerance);
   EXPECT_EQ(parsed.response_tolerance, defaults.response_tolerance);
   EXPECT_EQ(parsed.fallback, defaults.fallback);
+  EXPECT_EQ(parsed.global_points_auto, defaults.global_points_auto);
+  EXPECT_EQ(parsed.global_time_limit, defaults.global_time_limit);
+  EXPECT_EQ(parsed.local_starts, defaults.local_starts);
+  EXPECT_EQ(parsed.refinement_step, defaults.refinement_step);
+  EXPECT_TRUE(defaults.global_points_auto);
+  // "global points" takes a number too, and refuses anything else
+  prm.enter_subsection("Optimisation");
+  prm.set("global points", "64");
+  prm.leave_subsection();
+  parsed.parse_parameters(prm);
+  EXPECT_FALSE(parsed.global_points_auto);
+  EXPECT_EQ(parsed.global_points, 64u);
+  prm.enter_subsection("Optimisation");
+  prm.set("global points", "many");
+  prm.leave_subsection();
+  EXPECT_NE(error_of([&]() {
+              parsed.parse_parameters(prm);
+            })
+              .find("Optimisation: global points must be auto or an integer "
+                    "from 0 to 65536, got <many>"),
+            std::string::npos);
   // The value prm/step-4.prm sets too, for its reduced contact model.
   EXPECT_EQ(defaults.response_tolerance, 1e-7);
 }
