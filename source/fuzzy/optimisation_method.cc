@@ -869,14 +869,7 @@ namespace FuzzyContact
     result.n_infeasible      = n_infeasible;
     result.design_points     = n_design;
     result.design_cut        = cut;
-    if (cut)
-      result.notes.push_back(
-        "the global stage's design was cut from " + std::to_string(wanted) +
-        " to " + std::to_string(n_design) +
-        " points per alpha-box by the global time limit (" +
-        format(settings_.global_time_limit) + " s; an evaluation took " +
-        format(per_evaluation) +
-        " s): the number of points depends on the machine's speed");
+    result.design_wanted     = wanted;
     // (Evaluations made over all ranks: each distinct point once.)
     result.n_evaluations =
       parallel ? Utilities::MPI::sum(cache.n_evaluated_here(), comm)

@@ -236,8 +236,8 @@ namespace FuzzyContact
      * The optimisation's design: points per alpha-box, and whether the
      * global time limit cut it (then the number depends on the machine).
      */
-    unsigned int design_points = 0;
-    bool         design_cut    = false;
+    unsigned int design_points = 0, design_wanted = 0;
+    bool         design_cut = false;
 
     template <class Archive>
     void
@@ -245,7 +245,7 @@ namespace FuzzyContact
     {
       ar &alpha &bounds &argmin &argmax &n_evaluations &wall_time &notes
         &lower_quality &upper_quality &n_points &n_infeasible &design_points
-          &design_cut;
+          &design_wanted &design_cut;
     }
   };
 
