@@ -1459,3 +1459,202 @@ end
         }
     }
 }
+
+// Issue 19's case: a fuzzy clearance (1e-6, 5e-3, 30e-3 m) with a fuzzy
+// tip load (10, 50, 100 kN). On prm/stacked.prm F_t is mu F_n at the
+// touching tip, monotone (every bound at a vertex); its kinks come with a
+// push along P1 that makes friction reverse inside the range of the load,
+// as on prm/kinked.prm, here on coarse meshes with ROL held to 10
+// iterations as in prm/step-4-kinked.prm. F_t's largest value over the
+// alpha = 0.25 box lies at the kink where the contact starts to stick, a
+// curve in the gap and the load. The bound must be within 1e-3 of the range
+// of a dense reference of the same reduced model (per load the largest of
+// 101 gaps refined by golden-section search, over 101 loads refined
+// likewise), attained where it says, and called converged.
+TEST(FuzzyContactModel, KinkedMaximumOfAFuzzyClearanceAgainstADenseReference)
+{
+  const Scene               scene = Scene::read(source_dir + "/prm/kinked.prm");
+  const FuzzyParameterSet   set   = fuzzy_parameters(scene, R"(
+set fuzzy parameters = interface.gap, P1.tip.force
+subsection Fuzzy parameter interface.gap
+  set values = 1e-6, 5e-3, 30e-3
+end
+subsection Fuzzy parameter P1.tip.force
+  set values = 10e3, 50e3, 100e3
+end
+)");
+  FuzzyContactModelSettings model_settings = coarse_settings();
+  model_settings.fl2c.tolerance            = 1e-9;
+  FuzzyContactModel model(scene, set, {"Ft"}, model_settings);
+  const Response    reduced = [&](const std::vector<double> &p) {
+    return model.reduced(p);
+  };
+  OptimisationSettings settings;
+  settings.max_iterations = 10;
+  const auto alpha        = alpha_levels(5);
+  const auto o            = OptimisationMethod(settings).bounds(set.numbers(),
+                                                     alpha,
+                                                     reduced,
+                                                     {"Ft"},
+                                                     self);
+  ASSERT_EQ(alpha[1], 0.25);
+
+  // The dense reference over the alpha = 0.25 box: for each of 101 loads,
+  // the best of 101 gaps refined by a golden-section search between its
+  // neighbours (F_t is unimodal in the gap there: it rises to the kink
+  // where the contact starts to stick); then the same in the load around
+  // the best of them.
+  const auto box = alpha_box(set.numbers(), 0.25);
+  const auto golden =
+    [](const std::function<double(double)> &phi, double a, double b) {
+      const double r = (std::sqrt(5.) - 1) / 2;
+      double       c = b - r * (b - a), d = a + r * (b - a);
+      double       fc = phi(c), fd = phi(d);
+      for (unsigned int i = 0; i < 60 && b - a > 1e-12 * std::abs(b); ++i)
+        if (fc > fd)
+          {
+            b  = d;
+            d  = c;
+            fd = fc;
+            c  = b - r * (b - a);
+            fc = phi(c);
+          }
+        else
+          {
+            a  = c;
+            c  = d;
+            fc = fd;
+            d  = a + r * (b - a);
+            fd = phi(d);
+          }
+      return std::max(fc, fd);
+    };
+  // The largest of @p phi over @p range: 101 points, then golden section
+  // between the best one's neighbours.
+  const auto largest = [&](const std::function<double(double)> &phi,
+                           const Interval                      &range) {
+    double       best = -std::numeric_limits<double>::infinity();
+    unsigned int at   = 0;
+    for (unsigned int i = 0; i <= 100; ++i)
+      {
+        const double v = phi(range.lower + range.width() * i / 100);
+        if (v > best)
+          {
+            best = v;
+            at   = i;
+          }
+      }
+    return std::max(
+      best,
+      golden(phi,
+             range.lower + range.width() * (at > 0 ? at - 1 : 0) / 100,
+             range.lower + range.width() * std::min(at + 1, 100u) / 100));
+  };
+  double     lowest  = std::numeric_limits<double>::infinity();
+  const auto at_load = [&](const double load) {
+    return largest(
+      [&](const double gap) {
+        const double v = model.reduced({gap, load})[0];
+        lowest         = std::min(lowest, v);
+        return v;
+      },
+      box[0]);
+  };
+  const double best  = largest(at_load, box[1]);
+  const double range = best - lowest;
+  const double upper = o.bounds[0][1].upper;
+  EXPECT_GT(upper, best - 1e-3 * range)
+    << "short of the dense reference by " << (best - upper) / range
+    << " of the range";
+  EXPECT_EQ(model.reduced(o.argmax[0][1])[0], upper);
+  EXPECT_TRUE(o.upper_quality[0][1].converged)
+    << o.upper_quality[0][1].n_starts << " starts, "
+    << o.upper_quality[0][1].n_agree << " agree";
+}
+
+// A block on a 20-degree slope held by friction alone (prm/slope.prm), its
+// friction coefficient fuzzy (0.3, 0.4, 0.5) around statics' critical
+// tan 20 deg = 0.36397 and its load fuzzy: below tan 20 there is no static
+// equilibrium, a result of the point in both models (no outputs), which
+// has_static_equilibrium() tells without a solve. The fuzzy output
+// "sliding possible" has the membership of tan 20 in the friction
+// coefficient, (tan 20 - 0.3) / 0.1 = 0.63970 (to 1e-6: the equilibrium
+// check's NNLS decides to 1e-8 of the load), where it starts at mu =
+// tan 20. Over the part of every box with an equilibrium F_n = F cos 20
+// (statics), so the bounds of every method are those of the load times
+// cos 20, found at points with an equilibrium.
+TEST(FuzzyContactModel, SlidingInsideTheFuzzyRange)
+{
+  const Scene             scene = Scene::read(source_dir + "/prm/slope.prm");
+  const FuzzyParameterSet set   = fuzzy_parameters(scene, R"(
+set fuzzy parameters = block-on-slope.mu, Block.weight.force
+subsection Fuzzy parameter block-on-slope.mu
+  set values = 0.3, 0.4, 0.5
+end
+subsection Fuzzy parameter Block.weight.force
+  set values = 5e3, 1e4, 2e4
+end
+)");
+  FuzzyContactModel       model(scene, set, {"Fn"}, coarse_settings());
+  EXPECT_TRUE(model.can_lose_equilibrium());
+  EXPECT_EQ(model.bodies_held_by_contact(), "Block");
+  const double theta = 20 * M_PI / 180, t = std::tan(theta);
+  for (const double mu : {0.3, t - 1e-6, t + 1e-6, 0.5})
+    {
+      const bool holds = mu > t;
+      EXPECT_EQ(model.has_static_equilibrium({mu, 1e4}), holds) << mu;
+      EXPECT_EQ(has_solution(model.reduced({mu, 1e4})), holds) << mu;
+      EXPECT_EQ(has_solution(model.full_order({mu, 1e4})), holds) << mu;
+    }
+
+  const auto           numbers = model.effective_numbers();
+  const auto           alpha   = alpha_levels(5);
+  const FeasibleRegion region  = feasible_region(
+    numbers,
+    alpha,
+    [&](const std::vector<double> &p) {
+      return model.has_static_equilibrium(p);
+    },
+    32);
+  EXPECT_TRUE(region.possible);
+  EXPECT_TRUE(region.vertices_decide);
+  EXPECT_NEAR(region.membership, (t - 0.3) / 0.1, 1e-6);
+  ASSERT_EQ(region.starts_at.size(), 2u);
+  EXPECT_NEAR(region.starts_at[0], t, 1e-7);
+  for (unsigned int l = 0; l < alpha.size(); ++l)
+    {
+      EXPECT_EQ(region.levels[l].possible, alpha[l] < 0.6397) << alpha[l];
+      if (region.levels[l].possible)
+        {
+          // along mu from the vertex without equilibrium: at tan 20
+          ASSERT_FALSE(region.levels[l].boundary.empty());
+          EXPECT_EQ(region.levels[l].boundary[0].parameter, 0u);
+          EXPECT_NEAR(region.levels[l].boundary[0].point[0], t, 1e-7);
+        }
+    }
+
+  const Response reduced = [&](const std::vector<double> &p) {
+    return model.reduced(p);
+  };
+  std::vector<FuzzyOutputBounds> methods;
+  methods.push_back(
+    OptimisationMethod().bounds(numbers, alpha, reduced, {"Fn"}, self));
+  methods.push_back(
+    VertexMethod().bounds(numbers, alpha, reduced, {"Fn"}, self));
+  methods.push_back(
+    ExtensionPrinciple(3).bounds(numbers, alpha, reduced, {"Fn"}, self));
+  for (const FuzzyOutputBounds &b : methods)
+    for (unsigned int l = 0; l < alpha.size(); ++l)
+      {
+        const auto load = alpha_box(numbers, alpha[l])[1];
+        EXPECT_NEAR(b.bounds[0][l].lower,
+                    load.lower * std::cos(theta),
+                    1e-8 * 2e4);
+        EXPECT_NEAR(b.bounds[0][l].upper,
+                    load.upper * std::cos(theta),
+                    1e-8 * 2e4);
+        EXPECT_GE(b.argmin[0][l][0], t);
+        EXPECT_GE(b.argmax[0][l][0], t);
+        EXPECT_EQ(b.n_infeasible[l] > 0, alpha[l] < 0.6397) << alpha[l];
+      }
+}
