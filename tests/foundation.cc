@@ -1025,6 +1025,10 @@ TEST(Progress, LineEstimatesTheRemainingTimeAndQuietIsSilent)
             "  ... samples: 160/640 (25 %), 2.0 s elapsed, about 6.0 s left");
   EXPECT_EQ(ProgressLines::line("samples", 640, 640, 12.4),
             "  ... samples: 640/640 (100 %), 12 s elapsed");
+  // the optimisation's lines carry the evaluations made so far
+  EXPECT_EQ(ProgressLines::line("bounds", 22, 88, 1.0, "1912 evaluations"),
+            "  ... bounds: 22/88 (25 %), 1912 evaluations, 1.0 s elapsed, "
+            "about 3.0 s left");
   ProgressLines::set_verbosity(ProgressLines::Verbosity::quiet);
   EXPECT_FALSE(ProgressLines::enabled());
   ProgressLines::set_verbosity(ProgressLines::Verbosity::progress);

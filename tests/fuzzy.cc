@@ -5,6 +5,7 @@
 #include <fuzzycontact/base/input.h>
 #include <fuzzycontact/fuzzy/bound_proof.h>
 #include <fuzzycontact/fuzzy/extension_principle.h>
+#include <fuzzycontact/fuzzy/feasible_region.h>
 #include <fuzzycontact/fuzzy/fuzzy_number.h>
 #include <fuzzycontact/fuzzy/fuzzy_parameters.h>
 #include <fuzzycontact/fuzzy/global_stage.h>
@@ -16,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include "test_utilities.h"
+#include <array>
 #include <cmath>
 #include <memory>
 #include <set>
@@ -361,8 +363,9 @@ TEST(IntervalMethods, LocalOptimumTrapIsCaughtByTheVertexCheck)
   };
   const std::vector<double> alpha = {0, 1};
   OptimisationSettings      with = closed_form_settings(), without = with;
-  without.fallback      = false;
-  without.global_points = 0;
+  without.fallback           = false;
+  without.global_points_auto = false;
+  without.global_points      = 0;
   const auto o =
     OptimisationMethod(with).bounds(parameters, alpha, response, {"S"}, self);
   EXPECT_NEAR(o.bounds[0][0].lower, -1., 1e-12);
@@ -443,10 +446,12 @@ TEST(IntervalMethods, KinkedMaximumIsFoundAndReported)
           EXPECT_EQ(q.where, "boundary") << "alpha = " << alpha[l];
           EXPECT_EQ(q.kinks, std::vector<unsigned int>{0});
           EXPECT_TRUE(q.refined);
-          EXPECT_LT(q.last_change, 1e-4);
-          // the last step polled: the smallest halving of 1/16 >= 1e-6
-          EXPECT_GE(q.final_step, 1e-6);
+          // the pattern search stopped converged: three halvings below the
+          // refinement step (1e-6) in a row improved nothing
+          EXPECT_TRUE(q.search_converged);
+          EXPECT_EQ(q.last_change, 0.);
           EXPECT_LT(q.final_step, 2e-6);
+          EXPECT_TRUE(q.converged) << "alpha = " << alpha[l];
         }
       else
         EXPECT_EQ(q.where, "vertex") << "alpha = " << alpha[l];
@@ -473,25 +478,43 @@ TEST(IntervalMethods, KinkedMaximumIsFoundAndReported)
   EXPECT_GT(reference_short, 0.01);
 }
 
-// The design: one point in every stratum of every coordinate, the same for
-// the same seed, another for another seed.
-TEST(IntervalMethods, LatinHypercubeFillsEveryStratum)
+// The design is a (t, m, d)-net of 2^m points: one in every stratum of
+// every coordinate and, the first two Sobol coordinates being a (0, m,
+// 2)-net, one in every elementary box 2^-a x 2^-(m - a) of them (random
+// linear scrambling and a digital shift keep both); the same for the same
+// seed, another for another.
+TEST(GlobalStage, ScrambledSobolIsANet)
 {
-  const auto design = LocalOptimisation::latin_hypercube(16, 3, 7);
-  ASSERT_EQ(design.size(), 16u);
+  using namespace LocalOptimisation;
+  const unsigned int m = 6, n = 1u << m;
+  const auto         design = scrambled_sobol(n, 3, 7);
+  ASSERT_EQ(design.size(), n);
   for (unsigned int d = 0; d < 3; ++d)
     {
       std::set<unsigned int> strata;
       for (const auto &x : design)
         {
-          EXPECT_GE(x[d], 0.);
+          EXPECT_GT(x[d], 0.);
           EXPECT_LT(x[d], 1.);
-          strata.insert(static_cast<unsigned int>(x[d] * 16));
+          strata.insert(static_cast<unsigned int>(x[d] * n));
         }
-      EXPECT_EQ(strata.size(), 16u);
+      EXPECT_EQ(strata.size(), n) << "coordinate " << d;
     }
-  EXPECT_EQ(LocalOptimisation::latin_hypercube(16, 3, 7)[5], design[5]);
-  EXPECT_NE(LocalOptimisation::latin_hypercube(16, 3, 8)[5], design[5]);
+  for (unsigned int a = 0; a <= m; ++a)
+    {
+      std::set<std::pair<unsigned int, unsigned int>> boxes;
+      for (const auto &x : design)
+        boxes.insert({static_cast<unsigned int>(x[0] * (1u << a)),
+                      static_cast<unsigned int>(x[1] * (1u << (m - a)))});
+      EXPECT_EQ(boxes.size(), n) << "boxes 2^-" << a << " x 2^-" << m - a;
+    }
+  EXPECT_EQ(scrambled_sobol(n, 3, 7)[5], design[5]);
+  EXPECT_NE(scrambled_sobol(n, 3, 8)[5], design[5]);
+  // The default size grows with the number of parameters, a power of two.
+  EXPECT_EQ(default_design_points(1), 32u);
+  EXPECT_EQ(default_design_points(2), 64u);
+  EXPECT_EQ(default_design_points(3), 128u);
+  EXPECT_EQ(default_design_points(5), 256u);
 }
 
 // A local optimisation stopped by its iteration limit with the optimum
@@ -626,7 +649,7 @@ TEST(GlobalStage, FixedPointsAreThePointsOfTheStageButItsSeeds)
     return std::vector<double>{p[0] * p[0] - 0.3 * p[1]};
   });
   const Normalisation            normalisation(parameters);
-  const auto                     design = latin_hypercube(8, 2, 3);
+  const auto                     design = scrambled_sobol(8, 2, 3);
   for (const double alpha : {0., 0.5, 1.})
     {
       const auto [lo, hi] = normalisation.box(parameters, alpha);
@@ -719,6 +742,200 @@ TEST(IntervalMethods, EachMethodThroughTheInterfaceIsExactWhenMonotone)
   EXPECT_EQ(names.size(), 3u); // three different names
 }
 
+// Two wells of different depth: the design's basins are told apart
+// (nearest-better roots, confirmed by the hill-valley test) and the local
+// searches start in each, the deeper first; a response with one basin (a
+// plane) gets one start, whatever the roots of its clustering.
+TEST(GlobalStage, StartsComeFromDistinctBasins)
+{
+  using namespace LocalOptimisation;
+  const std::vector<FuzzyNumber> parameters =
+    {FuzzyNumber::triangular(0, 0.5, 1), FuzzyNumber::triangular(0, 0.5, 1)};
+  const Normalisation normalisation(parameters);
+  const auto [lo, hi] = normalisation.box(parameters, 0.);
+  const auto design   = scrambled_sobol(128, 2, 1);
+  const auto well     = [](const std::vector<double> &p,
+                       const double               x,
+                       const double               y,
+                       const double               depth) {
+    return depth *
+           std::exp(-(std::pow(p[0] - x, 2) + std::pow(p[1] - y, 2)) / 0.02);
+  };
+  EvaluationCache two([&](const std::vector<double> &p) {
+    return std::vector<double>{-well(p, 0.25, 0.3, 1.) -
+                               well(p, 0.75, 0.7, 0.8)};
+  });
+  OutputObjective wells(two, normalisation, 0, 1., 1., 1e-4, lo, hi);
+  const auto      stage = global_stage(wells, design, {}, lo, hi);
+  const Starts starts = basin_starts(wells, stage.candidates, lo, hi, 3, 1e-12);
+  ASSERT_EQ(starts.points.size(), 2u);
+  EXPECT_GE(starts.n_roots, 2u);
+  const auto near = [](const VectorType &x, const double a, const double b) {
+    return std::hypot(x[0] - a, x[1] - b) < 0.15;
+  };
+  EXPECT_TRUE(near(starts.points[0].x, 0.25, 0.3)) << starts.points[0].x;
+  EXPECT_TRUE(near(starts.points[1].x, 0.75, 0.7)) << starts.points[1].x;
+
+  EvaluationCache plane([](const std::vector<double> &p) {
+    return std::vector<double>{p[0] + 2 * p[1]};
+  });
+  OutputObjective flat(plane, normalisation, 0, 1., 1., 1e-4, lo, hi);
+  const auto      one = global_stage(flat, design, {}, lo, hi);
+  EXPECT_EQ(basin_starts(flat, one.candidates, lo, hi, 3, 1e-12).points.size(),
+            1u);
+}
+
+namespace
+{
+  // A ridge of kinks across the coordinate directions and their
+  // diagonals: S = p0 + p1 - 5 |p1 - 0.3 - 0.4 p0| on [0, 1]^2 falls along
+  // each of them from any point of the ridge p1 = 0.3 + 0.4 p0, and rises
+  // along the ridge to its maximum 1.7 at (1, 0.7). The shape of a
+  // friction force at the kink where a contact starts to stick, which moves
+  // with two parameters at once.
+  std::vector<double>
+  ridge(const std::vector<double> &p)
+  {
+    return {p[0] + p[1] - 5 * std::abs(p[1] - 0.3 - 0.4 * p[0])};
+  }
+} // namespace
+
+// A compass search (coordinates and diagonals) started on the ridge would
+// not move; the turned directions find the way along it, to the maximum
+// within 1e-3 of the range (4.2), and the search stops converged. The
+// optimisation method finds the same bound and calls it converged.
+TEST(GlobalStage, PatternSearchFollowsARidgeOfKinks)
+{
+  using namespace LocalOptimisation;
+  const std::vector<FuzzyNumber> parameters =
+    {FuzzyNumber::triangular(0, 0.5, 1), FuzzyNumber::triangular(0, 0.5, 1)};
+  const Normalisation normalisation(parameters);
+  const auto [lo, hi] = normalisation.box(parameters, 0.);
+  EvaluationCache cache(ridge);
+  OutputObjective objective(cache, normalisation, 0, -1., 1., 1e-4, lo, hi);
+  VectorType      x(2);
+  x[0]             = 0.2;
+  x[1]             = 0.38;
+  double     value = objective.at(x);
+  const auto search =
+    pattern_search(objective, x, value, lo, hi, 1. / 16, 1e-6, 1e-12);
+  const double range = 1.7 - (-2.5);
+  EXPECT_NEAR(-value, 1.7, 1e-3 * range) << x;
+  EXPECT_TRUE(search.converged);
+
+  const auto o = OptimisationMethod(closed_form_settings())
+                   .bounds(parameters, {0.}, ridge, {"S"}, self);
+  EXPECT_NEAR(o.bounds[0][0].upper, 1.7, 1e-3 * range);
+  EXPECT_NEAR(o.bounds[0][0].lower, -2.5, 1e-9);
+  EXPECT_TRUE(o.upper_quality[0][0].converged) << o.upper_quality[0][0].where;
+  EXPECT_TRUE(o.lower_quality[0][0].converged);
+}
+
+namespace
+{
+  // A response without a solution on part of the box, like a block held
+  // by friction alone: p0 a friction coefficient, p1 a load; no solution
+  // where p0 < 0.1 + 0.005 p1 (a convex set of loads per friction
+  // coefficient, growing with it: the vertices of a box decide). Outputs
+  // S0 = p0 p1 and S1 = p1.
+  const std::vector<FuzzyNumber> sliding_parameters = {
+    FuzzyNumber::triangular(0.1, 0.2, 0.3),
+    FuzzyNumber::triangular(10, 15, 20)};
+
+  bool
+  holds(const std::vector<double> &p)
+  {
+    return p[0] >= 0.1 + 0.005 * p[1];
+  }
+
+  std::vector<double>
+  sliding_response(const std::vector<double> &p)
+  {
+    if (!holds(p))
+      return {};
+    return {p[0] * p[1], p[1]};
+  }
+} // namespace
+
+// Every method bounds the outputs over the part of each box with a
+// solution and counts the points without one; the feasible region's
+// membership (sliding possible below alpha = 0.8, where p0's lower end
+// 0.1 + 0.1 alpha meets 0.1 + 0.005 p1's upper end 20 - 5 alpha) and where
+// it starts (p0 = 0.18, p1 = 16) are the closed form's.
+TEST(IntervalMethods, PointsWithoutASolutionAreLeftOut)
+{
+  const auto alpha = alpha_levels(6);
+  // Over the part with a solution: S0 from p1's lower end at the larger of
+  // p0's lower end and the edge, to both upper ends; S1 over p1's cut.
+  const auto exact = [](const double a) {
+    const auto b = alpha_box(sliding_parameters, a);
+    return std::array<Interval, 2>{
+      {Interval{b[1].lower * std::max(b[0].lower, 0.1 + 0.005 * b[1].lower),
+                b[0].upper * b[1].upper},
+       Interval{b[1].lower, b[1].upper}}};
+  };
+  const double range = 6. - 1.5;
+  const auto   o =
+    OptimisationMethod(closed_form_settings())
+      .bounds(sliding_parameters, alpha, sliding_response, {"S0", "S1"}, self);
+  const auto v = VertexMethod().bounds(sliding_parameters,
+                                       alpha,
+                                       sliding_response,
+                                       {"S0", "S1"},
+                                       self);
+  const auto e = ExtensionPrinciple(11).bounds(sliding_parameters,
+                                               alpha,
+                                               sliding_response,
+                                               {"S0", "S1"},
+                                               self);
+  for (unsigned int l = 0; l < alpha.size(); ++l)
+    {
+      const auto x = exact(alpha[l]);
+      EXPECT_NEAR(o.bounds[0][l].lower, x[0].lower, 1e-6 * range)
+        << "alpha = " << alpha[l];
+      EXPECT_NEAR(o.bounds[0][l].upper, x[0].upper, 1e-12 * range);
+      EXPECT_NEAR(o.bounds[1][l].lower, x[1].lower, 1e-12);
+      EXPECT_NEAR(o.bounds[1][l].upper, x[1].upper, 1e-12);
+      // every argument has a solution
+      EXPECT_TRUE(holds(o.argmin[0][l]));
+      EXPECT_TRUE(holds(o.argmax[0][l]));
+      // the sampled methods lie inside, and count the points left out
+      EXPECT_GE(e.bounds[0][l].lower, x[0].lower - 1e-12);
+      EXPECT_GE(v.bounds[0][l].lower, x[0].lower - 1e-12);
+      const bool sliding = alpha[l] < 0.8 - 1e-12;
+      EXPECT_EQ(v.n_infeasible[l] > 0, sliding) << "alpha = " << alpha[l];
+      EXPECT_EQ(e.n_infeasible[l] > 0, sliding) << "alpha = " << alpha[l];
+      EXPECT_EQ(o.n_infeasible[l] > 0, sliding) << "alpha = " << alpha[l];
+    }
+  // The vertex method's samples in the support's box: the vertices of
+  // every level, 5 x 4 + 1; without a solution (0.1 + 0.1 alpha, 10 + 5
+  // alpha) for alpha < 2/3 and (0.1 + 0.1 alpha, 20 - 5 alpha) for alpha <
+  // 0.8: 4 + 4 of them.
+  EXPECT_EQ(v.n_points[0], 21u);
+  EXPECT_EQ(v.n_infeasible[0], 8u);
+  // the lower bound of S0 lies on the edge of the part with a solution
+  EXPECT_EQ(o.lower_quality[0][0].edge, std::vector<unsigned int>{0});
+
+  const FeasibleRegion region =
+    feasible_region(sliding_parameters, alpha, holds, 64);
+  EXPECT_TRUE(region.possible);
+  EXPECT_TRUE(region.vertices_decide);
+  EXPECT_NEAR(region.membership, 0.8, 1e-10);
+  ASSERT_EQ(region.starts_at.size(), 2u);
+  EXPECT_NEAR(region.starts_at[0], 0.18, 1e-10);
+  EXPECT_NEAR(region.starts_at[1], 16., 1e-9);
+  // at the support: (0.1, 10) has no solution; along p0 it starts at 0.15
+  // (along p1 the neighbour (0.1, 20) has none either); the share of the
+  // box with one is 1 - 0.075 / 0.2 = 0.625 (a Sobol estimate)
+  const LevelFeasibility &support = region.levels[0];
+  EXPECT_TRUE(support.possible);
+  ASSERT_EQ(support.boundary.size(), 1u);
+  EXPECT_EQ(support.boundary[0].parameter, 0u);
+  EXPECT_NEAR(support.boundary[0].point[0], 0.15, 1e-9);
+  EXPECT_NEAR(support.feasible_fraction(), 0.625, 0.03);
+  EXPECT_FALSE(region.levels.back().possible);
+}
+
 // One default per setting, stated once: the parameter file's defaults are
 // those of the struct.
 TEST(IntervalMethods, OptimisationDefaultsOfTheParameterFileAreTheStructs)
@@ -735,6 +952,11 @@ TEST(IntervalMethods, OptimisationDefaultsOfTheParameterFileAreTheStructs)
   parsed.interior_tolerance     = 0.5;
   parsed.response_tolerance     = 1e-3;
   parsed.fallback               = false;
+  parsed.global_points_auto     = false;
+  parsed.global_points          = 5;
+  parsed.global_time_limit      = 1;
+  parsed.local_starts           = 9;
+  parsed.refinement_step        = 0.01;
   parsed.parse_parameters(prm);
   const OptimisationSettings defaults;
   EXPECT_EQ(parsed.algorithm, defaults.algorithm);
@@ -745,6 +967,27 @@ TEST(IntervalMethods, OptimisationDefaultsOfTheParameterFileAreTheStructs)
   EXPECT_EQ(parsed.interior_tolerance, defaults.interior_tolerance);
   EXPECT_EQ(parsed.response_tolerance, defaults.response_tolerance);
   EXPECT_EQ(parsed.fallback, defaults.fallback);
+  EXPECT_EQ(parsed.global_points_auto, defaults.global_points_auto);
+  EXPECT_EQ(parsed.global_time_limit, defaults.global_time_limit);
+  EXPECT_EQ(parsed.local_starts, defaults.local_starts);
+  EXPECT_EQ(parsed.refinement_step, defaults.refinement_step);
+  EXPECT_TRUE(defaults.global_points_auto);
+  // "global points" takes a number too, and refuses anything else
+  prm.enter_subsection("Optimisation");
+  prm.set("global points", "64");
+  prm.leave_subsection();
+  parsed.parse_parameters(prm);
+  EXPECT_FALSE(parsed.global_points_auto);
+  EXPECT_EQ(parsed.global_points, 64u);
+  prm.enter_subsection("Optimisation");
+  prm.set("global points", "many");
+  prm.leave_subsection();
+  EXPECT_NE(error_of([&]() {
+              parsed.parse_parameters(prm);
+            })
+              .find("Optimisation: global points must be auto or an integer "
+                    "from 0 to 65536, got <many>"),
+            std::string::npos);
   // The value prm/step-4.prm sets too, for its reduced contact model.
   EXPECT_EQ(defaults.response_tolerance, 1e-7);
 }
@@ -1215,4 +1458,203 @@ end
           EXPECT_NEAR(v[2], exact[1], 1e-9 * std::abs(exact[1]));
         }
     }
+}
+
+// Issue 19's case: a fuzzy clearance (1e-6, 5e-3, 30e-3 m) with a fuzzy
+// tip load (10, 50, 100 kN). On prm/stacked.prm F_t is mu F_n at the
+// touching tip, monotone (every bound at a vertex); its kinks come with a
+// push along P1 that makes friction reverse inside the range of the load,
+// as on prm/kinked.prm, here on coarse meshes with ROL held to 10
+// iterations as in prm/step-4-kinked.prm. F_t's largest value over the
+// alpha = 0.25 box lies at the kink where the contact starts to stick, a
+// curve in the gap and the load. The bound must be within 1e-3 of the range
+// of a dense reference of the same reduced model (per load the largest of
+// 101 gaps refined by golden-section search, over 101 loads refined
+// likewise), attained where it says, and called converged.
+TEST(FuzzyContactModel, KinkedMaximumOfAFuzzyClearanceAgainstADenseReference)
+{
+  const Scene               scene = Scene::read(source_dir + "/prm/kinked.prm");
+  const FuzzyParameterSet   set   = fuzzy_parameters(scene, R"(
+set fuzzy parameters = interface.gap, P1.tip.force
+subsection Fuzzy parameter interface.gap
+  set values = 1e-6, 5e-3, 30e-3
+end
+subsection Fuzzy parameter P1.tip.force
+  set values = 10e3, 50e3, 100e3
+end
+)");
+  FuzzyContactModelSettings model_settings = coarse_settings();
+  model_settings.fl2c.tolerance            = 1e-9;
+  FuzzyContactModel model(scene, set, {"Ft"}, model_settings);
+  const Response    reduced = [&](const std::vector<double> &p) {
+    return model.reduced(p);
+  };
+  OptimisationSettings settings;
+  settings.max_iterations = 10;
+  const auto alpha        = alpha_levels(5);
+  const auto o            = OptimisationMethod(settings).bounds(set.numbers(),
+                                                     alpha,
+                                                     reduced,
+                                                     {"Ft"},
+                                                     self);
+  ASSERT_EQ(alpha[1], 0.25);
+
+  // The dense reference over the alpha = 0.25 box: for each of 101 loads,
+  // the best of 101 gaps refined by a golden-section search between its
+  // neighbours (F_t is unimodal in the gap there: it rises to the kink
+  // where the contact starts to stick); then the same in the load around
+  // the best of them.
+  const auto box = alpha_box(set.numbers(), 0.25);
+  const auto golden =
+    [](const std::function<double(double)> &phi, double a, double b) {
+      const double r = (std::sqrt(5.) - 1) / 2;
+      double       c = b - r * (b - a), d = a + r * (b - a);
+      double       fc = phi(c), fd = phi(d);
+      for (unsigned int i = 0; i < 60 && b - a > 1e-12 * std::abs(b); ++i)
+        if (fc > fd)
+          {
+            b  = d;
+            d  = c;
+            fd = fc;
+            c  = b - r * (b - a);
+            fc = phi(c);
+          }
+        else
+          {
+            a  = c;
+            c  = d;
+            fc = fd;
+            d  = a + r * (b - a);
+            fd = phi(d);
+          }
+      return std::max(fc, fd);
+    };
+  // The largest of @p phi over @p range: 101 points, then golden section
+  // between the best one's neighbours.
+  const auto largest = [&](const std::function<double(double)> &phi,
+                           const Interval                      &range) {
+    double       best = -std::numeric_limits<double>::infinity();
+    unsigned int at   = 0;
+    for (unsigned int i = 0; i <= 100; ++i)
+      {
+        const double v = phi(range.lower + range.width() * i / 100);
+        if (v > best)
+          {
+            best = v;
+            at   = i;
+          }
+      }
+    return std::max(
+      best,
+      golden(phi,
+             range.lower + range.width() * (at > 0 ? at - 1 : 0) / 100,
+             range.lower + range.width() * std::min(at + 1, 100u) / 100));
+  };
+  double     lowest  = std::numeric_limits<double>::infinity();
+  const auto at_load = [&](const double load) {
+    return largest(
+      [&](const double gap) {
+        const double v = model.reduced({gap, load})[0];
+        lowest         = std::min(lowest, v);
+        return v;
+      },
+      box[0]);
+  };
+  const double best  = largest(at_load, box[1]);
+  const double range = best - lowest;
+  const double upper = o.bounds[0][1].upper;
+  EXPECT_GT(upper, best - 1e-3 * range)
+    << "short of the dense reference by " << (best - upper) / range
+    << " of the range";
+  EXPECT_EQ(model.reduced(o.argmax[0][1])[0], upper);
+  EXPECT_TRUE(o.upper_quality[0][1].converged)
+    << o.upper_quality[0][1].n_starts << " starts, "
+    << o.upper_quality[0][1].n_agree << " agree";
+}
+
+// A block on a 20-degree slope held by friction alone (prm/slope.prm), its
+// friction coefficient fuzzy (0.3, 0.4, 0.5) around statics' critical
+// tan 20 deg = 0.36397 and its load fuzzy: below tan 20 there is no static
+// equilibrium, a result of the point in both models (no outputs), which
+// has_static_equilibrium() tells without a solve. The fuzzy output
+// "sliding possible" has the membership of tan 20 in the friction
+// coefficient, (tan 20 - 0.3) / 0.1 = 0.63970 (to 1e-6: the equilibrium
+// check's NNLS decides to 1e-8 of the load), where it starts at mu =
+// tan 20. Over the part of every box with an equilibrium F_n = F cos 20
+// (statics), so the bounds of every method are those of the load times
+// cos 20, found at points with an equilibrium.
+TEST(FuzzyContactModel, SlidingInsideTheFuzzyRange)
+{
+  const Scene             scene = Scene::read(source_dir + "/prm/slope.prm");
+  const FuzzyParameterSet set   = fuzzy_parameters(scene, R"(
+set fuzzy parameters = block-on-slope.mu, Block.weight.force
+subsection Fuzzy parameter block-on-slope.mu
+  set values = 0.3, 0.4, 0.5
+end
+subsection Fuzzy parameter Block.weight.force
+  set values = 5e3, 1e4, 2e4
+end
+)");
+  FuzzyContactModel       model(scene, set, {"Fn"}, coarse_settings());
+  EXPECT_TRUE(model.can_lose_equilibrium());
+  EXPECT_EQ(model.bodies_held_by_contact(), "Block");
+  const double theta = 20 * M_PI / 180, t = std::tan(theta);
+  for (const double mu : {0.3, t - 1e-6, t + 1e-6, 0.5})
+    {
+      const bool holds = mu > t;
+      EXPECT_EQ(model.has_static_equilibrium({mu, 1e4}), holds) << mu;
+      EXPECT_EQ(has_solution(model.reduced({mu, 1e4})), holds) << mu;
+      EXPECT_EQ(has_solution(model.full_order({mu, 1e4})), holds) << mu;
+    }
+
+  const auto           numbers = model.effective_numbers();
+  const auto           alpha   = alpha_levels(5);
+  const FeasibleRegion region  = feasible_region(
+    numbers,
+    alpha,
+    [&](const std::vector<double> &p) {
+      return model.has_static_equilibrium(p);
+    },
+    32);
+  EXPECT_TRUE(region.possible);
+  EXPECT_TRUE(region.vertices_decide);
+  EXPECT_NEAR(region.membership, (t - 0.3) / 0.1, 1e-6);
+  ASSERT_EQ(region.starts_at.size(), 2u);
+  EXPECT_NEAR(region.starts_at[0], t, 1e-7);
+  for (unsigned int l = 0; l < alpha.size(); ++l)
+    {
+      EXPECT_EQ(region.levels[l].possible, alpha[l] < 0.6397) << alpha[l];
+      if (region.levels[l].possible)
+        {
+          // along mu from the vertex without equilibrium: at tan 20
+          ASSERT_FALSE(region.levels[l].boundary.empty());
+          EXPECT_EQ(region.levels[l].boundary[0].parameter, 0u);
+          EXPECT_NEAR(region.levels[l].boundary[0].point[0], t, 1e-7);
+        }
+    }
+
+  const Response reduced = [&](const std::vector<double> &p) {
+    return model.reduced(p);
+  };
+  std::vector<FuzzyOutputBounds> methods;
+  methods.push_back(
+    OptimisationMethod().bounds(numbers, alpha, reduced, {"Fn"}, self));
+  methods.push_back(
+    VertexMethod().bounds(numbers, alpha, reduced, {"Fn"}, self));
+  methods.push_back(
+    ExtensionPrinciple(3).bounds(numbers, alpha, reduced, {"Fn"}, self));
+  for (const FuzzyOutputBounds &b : methods)
+    for (unsigned int l = 0; l < alpha.size(); ++l)
+      {
+        const auto load = alpha_box(numbers, alpha[l])[1];
+        EXPECT_NEAR(b.bounds[0][l].lower,
+                    load.lower * std::cos(theta),
+                    1e-8 * 2e4);
+        EXPECT_NEAR(b.bounds[0][l].upper,
+                    load.upper * std::cos(theta),
+                    1e-8 * 2e4);
+        EXPECT_GE(b.argmin[0][l][0], t);
+        EXPECT_GE(b.argmax[0][l][0], t);
+        EXPECT_EQ(b.n_infeasible[l] > 0, alpha[l] < 0.6397) << alpha[l];
+      }
 }

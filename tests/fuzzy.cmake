@@ -246,3 +246,18 @@ fuzzycontact_program_test(step-4.bad_input.zone_modulus_with_gravity step-4 colu
   "-DEDIT2_FROM=subsection Fuzzy parameter Footing.E"
   "-DEDIT2_TO=subsection Fuzzy parameter Footing.body.E"
   "-DMESSAGE=Scene quantity <Footing.body.E>: the scene has gravity.*Vary the modulus of the whole body \\(Footing.E\\)")
+
+# Sliding inside the fuzzy range (prm/step-4-slope.prm: a block on a slope
+# held by friction alone, mu around statics' critical tan 20 deg), 5 alpha
+# levels, 3 points per parameter in the Extension Principle: the study goes
+# on where there is no static equilibrium, says from which alpha sliding is
+# possible and where it starts, and bounds the outputs over the rest.
+step4_study_test(step-4.sliding step-4-slope.prm slope.prm
+  step-4-slope-output check_step-4_slope.cmake
+  -DEXTRA_FILES=${CMAKE_SOURCE_DIR}/prm/meshes
+  "-DEDIT_FILE=step"
+  "-DEDIT_FROM=set number of alpha levels = 11"
+  "-DEDIT_TO=set number of alpha levels = 5"
+  "-DEDIT2_FILE=step"
+  "-DEDIT2_FROM=set points per dimension = 4"
+  "-DEDIT2_TO=set points per dimension = 3")

@@ -45,7 +45,8 @@ namespace FuzzyContact
                         "auto",
                         Patterns::Selection("quiet|auto|progress"),
                         "Progress lines on long stages (offline build, "
-                        "reference sampling), on standard error: 'quiet' "
+                        "optimisation, reference sampling), on standard "
+                        "error: 'quiet' "
                         "never, 'auto' when standard error is a terminal, "
                         "'progress' always (at most one line every few "
                         "seconds).");
@@ -105,12 +106,14 @@ namespace FuzzyContact
     line(const std::string &what,
          const unsigned int done,
          const unsigned int total,
-         const double       elapsed)
+         const double       elapsed,
+         const std::string &detail)
     {
       std::ostringstream out;
       out << "  ... " << what << ": " << done << "/" << total << " ("
           << (total == 0 ? 100 : 100 * done / total) << " %), "
-          << seconds(elapsed) << " elapsed";
+          << (detail.empty() ? "" : detail + ", ") << seconds(elapsed)
+          << " elapsed";
       if (done > 0 && done < total)
         out << ", about " << seconds(elapsed * (total - done) / done)
             << " left";
@@ -119,10 +122,12 @@ namespace FuzzyContact
   } // namespace ProgressLines
 
 
-  Progress::Progress(const std::string &what,
-                     const unsigned int total,
-                     const double       interval)
+  Progress::Progress(const std::string                  &what,
+                     const unsigned int                  total,
+                     const double                        interval,
+                     const std::function<std::string()> &detail)
       : what(what)
+      , detail(detail)
       , total(total)
       , interval(interval)
       , last_line(0)
@@ -155,7 +160,11 @@ namespace FuzzyContact
   void
   Progress::print() const
   {
-    std::cerr << ProgressLines::line(what, done, total, timer.wall_time())
+    std::cerr << ProgressLines::line(what,
+                                     done,
+                                     total,
+                                     timer.wall_time(),
+                                     detail ? detail() : std::string())
               << std::endl;
   }
 } // namespace FuzzyContact

@@ -634,7 +634,35 @@ namespace FuzzyContact
     else
       message << "slides or lifts off, whatever the friction. Hold it by a "
                  "support, or change the load.";
-    AssertThrow(false, ExcMessage(message.str()));
+    AssertThrow(false, ExcNoStaticEquilibrium(message.str()));
+  }
+
+
+  bool
+  has_static_equilibrium(const ContactProblem &problem,
+                         const double          load_factor)
+  {
+    if (problem.rigid.size() == 0)
+      return true;
+    LoadStep step;
+    step.step  = 0;
+    step.rigid = &problem.rigid;
+    Vector<double> p;
+    if (problem.stages.empty())
+      {
+        step.rigid_load = problem.rigid_load;
+        step.rigid_load *= load_factor;
+        return admissible_forces(step, problem.mu, p);
+      }
+    Vector<double> held(problem.rigid.size());
+    for (const GapLoadStage &stage : problem.stages)
+      {
+        held.add(load_factor, stage.rigid_load);
+        step.rigid_load = held;
+        if (!admissible_forces(step, problem.mu, p))
+          return false;
+      }
+    return true;
   }
 
 

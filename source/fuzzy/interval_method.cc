@@ -178,7 +178,9 @@ namespace FuzzyContact
       for (const auto &[b, r] :
            {std::make_pair(bounds[l].lower, reference[l].lower),
             std::make_pair(bounds[l].upper, reference[l].upper)})
-        worst = std::max(worst, std::abs(b - r) / std::max(std::abs(r), floor));
+        if (!std::isnan(b) && !std::isnan(r)) // (NaN: no bound there)
+          worst =
+            std::max(worst, std::abs(b - r) / std::max(std::abs(r), floor));
     return worst;
   }
 } // namespace FuzzyContact

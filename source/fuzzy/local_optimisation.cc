@@ -13,6 +13,7 @@
 #include <ROL_Solver.hpp>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace FuzzyContact
@@ -107,6 +108,12 @@ namespace FuzzyContact
     OutputObjective::at(const VectorType &x)
     {
       const std::vector<double> &s = cache(normalisation.parameters(x));
+      if (!has_solution(s))
+        return std::numeric_limits<double>::infinity();
+      AssertThrow(output < s.size(),
+                  ExcMessage("The response returned " +
+                             std::to_string(s.size()) + " outputs; output " +
+                             std::to_string(output + 1) + " was asked for."));
       AssertThrow(std::isfinite(s[output]),
                   ExcMessage("The response returned a non-finite value."));
       return sign * s[output] / scale;
@@ -155,7 +162,17 @@ namespace FuzzyContact
           xp[i]           = down;
           const double fm = at(xp);
           xp[i]           = x0[i];
-          grad[i]         = (fp - fm) / (up - down);
+          // One-sided where a side has no solution, none where neither
+          // has.
+          const double f0 =
+            (std::isfinite(fp) && std::isfinite(fm)) ? 0. : at(x0);
+          grad[i] = std::isfinite(fp) && std::isfinite(fm)
+                      ? (fp - fm) / (up - down)
+                    : std::isfinite(fp) && std::isfinite(f0) && up > x0[i]
+                      ? (fp - f0) / (up - x0[i])
+                    : std::isfinite(fm) && std::isfinite(f0) && down < x0[i]
+                      ? (f0 - fm) / (x0[i] - down)
+                      : 0.;
         }
     }
 
@@ -188,7 +205,15 @@ namespace FuzzyContact
         double
         value(const ROL::Vector<double> &x, double & /*tol*/) override
         {
-          return objective.at(unwrap(x));
+          // A point without a solution: a barrier far above every value
+          // ROL has seen, so that its line search steps back.
+          const double f = objective.at(unwrap(x));
+          if (std::isfinite(f))
+            {
+              largest = std::max(largest, std::abs(f));
+              return f;
+            }
+          return 1e3 * (1 + largest);
         }
 
         void
@@ -203,6 +228,7 @@ namespace FuzzyContact
 
       private:
         OutputObjective &objective;
+        double           largest = 0;
       };
 
       // ROL's parameters for the algorithm and tolerances of @p settings.
@@ -279,6 +305,17 @@ namespace FuzzyContact
       for (unsigned int i = 0; i < n; ++i) // ROL keeps x feasible; be exact
         optimum.x[i] = std::min(std::max(optimum.x[i], lower[i]), upper[i]);
       optimum.value = objective.at(optimum.x);
+      // (ROL ends where it started if it found no better point with a
+      // solution; never worse than its start.)
+      VectorType clipped_start(n);
+      for (unsigned int i = 0; i < n; ++i)
+        clipped_start[i] = std::min(std::max(start[i], lower[i]), upper[i]);
+      const double at_start = objective.at(clipped_start);
+      if (!(optimum.value <= at_start))
+        {
+          optimum.x     = clipped_start;
+          optimum.value = at_start;
+        }
       optimum.gradient.reinit(n);
       objective.gradient_at(optimum.gradient, optimum.x);
       return optimum;

@@ -4,6 +4,7 @@
 // evaluation cache shared by the MPI ranks. Its settings:
 // optimisation_settings.cc.
 
+#include <fuzzycontact/base/progress.h>
 #include <fuzzycontact/fuzzy/global_stage.h>
 #include <fuzzycontact/fuzzy/local_optimisation.h>
 #include <fuzzycontact/fuzzy/optimisation_method.h>
@@ -15,6 +16,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <set>
 #include <sstream>
 
 namespace FuzzyContact
@@ -86,15 +89,26 @@ namespace FuzzyContact
       run(const std::vector<double>       &alpha,
           const std::vector<unsigned int> &order,
           const VectorType                &centre,
-          const std::vector<VectorType>   &design) const;
+          const std::vector<VectorType>   &design,
+          Progress                        *progress) const;
 
     private:
-      LocalOptimum
-      local_stage(OutputObjective              &objective,
-                  const std::vector<Candidate> &pool,
-                  const VectorType             &lo,
-                  const VectorType             &hi,
-                  unsigned int                 &n_starts) const;
+      std::vector<LocalOptimum>
+      local_stage(OutputObjective  &objective,
+                  const Starts     &starts,
+                  const VectorType &lo,
+                  const VectorType &hi) const;
+      void
+      compare_basins(OutputObjective                 &objective,
+                     const std::vector<LocalOptimum> &optima,
+                     const unsigned int               winner,
+                     LocalOptimum                    &best,
+                     const VectorType                &lo,
+                     const VectorType                &hi,
+                     const double                     range,
+                     BoundQuality                    &quality,
+                     const std::string               &level,
+                     ChainResult                     &result) const;
       bool
       check_interval_ends(OutputObjective          &objective,
                           LocalOptimum             &best,
@@ -124,7 +138,8 @@ namespace FuzzyContact
                    const std::string              &level,
                    const std::vector<std::string> &findings,
                    const bool                      missed,
-                   const unsigned int              n_starts) const;
+                   const unsigned int              n_starts,
+                   const unsigned int              n_design) const;
       void
       check_sensitivity_signs(const std::vector<VectorType> &gradients,
                               ChainResult                   &result) const;
@@ -144,7 +159,8 @@ namespace FuzzyContact
     Chain::run(const std::vector<double>       &alpha,
                const std::vector<unsigned int> &order,
                const VectorType                &centre,
-               const std::vector<VectorType>   &design) const
+               const std::vector<VectorType>   &design,
+               Progress                        *progress) const
     {
       ChainResult result;
       result.value.resize(alpha.size());
@@ -167,13 +183,47 @@ namespace FuzzyContact
                                     hi);
           const std::string level = what + ", alpha = " + format(alpha[l]);
 
-          // The global stage, then the local optimisation from its best.
-          const std::vector<Candidate> pool =
+          // The global stage: the points with a solution, best first.
+          const GlobalStage stage =
             global_stage(objective, design, seeds, lo, hi);
-          const double range    = pool.back().value - pool.front().value;
-          unsigned int n_starts = 0;
-          LocalOptimum best = local_stage(objective, pool, lo, hi, n_starts);
-          BoundQuality quality;
+          const std::vector<Candidate> &pool = stage.candidates;
+          BoundQuality                  quality;
+          quality.n_design = pool.size();
+          if (pool.empty())
+            {
+              // No point of the box has a solution: no bound here.
+              result.value[l] = std::numeric_limits<double>::quiet_NaN();
+              result.argument[l].clear();
+              quality.where     = "none";
+              result.quality[l] = quality;
+              result.notes.push_back(
+                level + ": none of the " + std::to_string(stage.n_points) +
+                " points of the global stage has a solution: no bound");
+              if (progress)
+                progress->advance();
+              continue;
+            }
+          const double range  = pool.back().value - pool.front().value;
+          const double noise0 = settings.response_tolerance *
+                                std::max(1., std::abs(pool.front().value));
+
+          // Local searches from the best points of distinct basins.
+          const Starts starts     = basin_starts(objective,
+                                             pool,
+                                             lo,
+                                             hi,
+                                             settings.local_starts,
+                                             noise0);
+          quality.n_roots         = starts.n_roots;
+          quality.n_starts        = starts.points.size();
+          quality.basins_searched = starts.all_roots_tested;
+          const std::vector<LocalOptimum> optima =
+            local_stage(objective, starts, lo, hi);
+          unsigned int winner = 0;
+          for (unsigned int s = 1; s < optima.size(); ++s)
+            if (optima[s].value < optima[winner].value)
+              winner = s;
+          LocalOptimum best       = optima[winner];
           quality.iteration_limit = !best.converged;
 
           // Is the response monotone here? An interior optimum, or a point
@@ -197,7 +247,9 @@ namespace FuzzyContact
                                                 level,
                                                 findings,
                                                 missed,
-                                                n_starts));
+                                                quality.n_starts,
+                                                design.size()));
+          quality.design_better = pool.front().value < best.value - noise;
           if (pool.front().value < best.value)
             {
               best.x     = pool.front().x;
@@ -205,7 +257,24 @@ namespace FuzzyContact
             }
           objective.gradient_at(best.gradient, best.x);
           refine(objective, best, lo, hi, range, quality);
+          compare_basins(objective,
+                         optima,
+                         winner,
+                         best,
+                         lo,
+                         hi,
+                         range,
+                         quality,
+                         level,
+                         result);
           gradients.push_back(best.gradient);
+
+          // Converged only with evidence (BoundQuality::converged).
+          quality.converged =
+            (quality.refined ? quality.search_converged
+                             : quality.projected_gradient == 0) &&
+            !quality.design_better &&
+            (quality.basins_searched || quality.n_agree >= 2);
 
           if (moved)
             result.notes.push_back(
@@ -223,33 +292,88 @@ namespace FuzzyContact
           for (unsigned int c = 0; c < std::min<std::size_t>(2, pool.size());
                ++c)
             seeds.push_back(pool[c].x);
+          if (progress)
+            progress->advance();
         }
       check_sensitivity_signs(gradients, result);
       return result;
     }
 
 
-    // The local optimisation from the best points of the global stage
-    // (local_starts()); @p n_starts says from how many.
-    LocalOptimum
-    Chain::local_stage(OutputObjective              &objective,
-                       const std::vector<Candidate> &pool,
-                       const VectorType             &lo,
-                       const VectorType             &hi,
-                       unsigned int                 &n_starts) const
+    // A local optimisation from each start.
+    std::vector<LocalOptimum>
+    Chain::local_stage(OutputObjective  &objective,
+                       const Starts     &starts,
+                       const VectorType &lo,
+                       const VectorType &hi) const
     {
-      const std::vector<VectorType> starts =
-        local_starts(pool, lo, hi, settings.local_starts);
-      n_starts          = starts.size();
-      LocalOptimum best = minimise(objective, starts[0], lo, hi, settings);
-      for (unsigned int s = 1; s < starts.size(); ++s)
+      std::vector<LocalOptimum> optima;
+      for (const Candidate &s : starts.points)
+        optima.push_back(minimise(objective, s.x, lo, hi, settings));
+      return optima;
+    }
+
+
+    // The local searches from the other basins than the @p winner's,
+    // against the bound @p best: those that did not reach it are refined
+    // as the bound was (ends of the intervals, pattern search); how many
+    // reach it is counted, how far the best of the others stays is kept,
+    // and a better one (rare: its pattern search went further) becomes the
+    // bound.
+    void
+    Chain::compare_basins(OutputObjective                 &objective,
+                          const std::vector<LocalOptimum> &optima,
+                          const unsigned int               winner,
+                          LocalOptimum                    &best,
+                          const VectorType                &lo,
+                          const VectorType                &hi,
+                          const double                     range,
+                          BoundQuality                    &quality,
+                          const std::string               &level,
+                          ChainResult                     &result) const
+    {
+      const double noise =
+        settings.response_tolerance * std::max(1., std::abs(best.value));
+      const double tolerance = std::max(10 * noise, 1e-6 * range);
+      quality.n_agree        = quality.design_better ? 0 : 1;
+      double other           = std::numeric_limits<double>::infinity();
+      for (unsigned int s = 0; s < optima.size(); ++s)
         {
-          LocalOptimum candidate =
-            minimise(objective, starts[s], lo, hi, settings);
-          if (candidate.value < best.value)
-            best = candidate;
+          if (s == winner)
+            continue;
+          LocalOptimum o = optima[s];
+          if (o.value > best.value + tolerance)
+            {
+              std::vector<std::string> ignored;
+              check_interval_ends(objective, o, lo, hi, ignored);
+              objective.gradient_at(o.gradient, o.x);
+              BoundQuality scratch;
+              refine(objective, o, lo, hi, range, scratch);
+            }
+          if (o.value < best.value - tolerance)
+            {
+              // Another basin's search went further: it is the bound.
+              result.notes.push_back(
+                level +
+                ": the local search from another basin found a better point "
+                "than the best start's (by " +
+                format((best.value - o.value) / (range > 0 ? range : 1.)) +
+                " of the range); it is the bound");
+              other          = std::min(other, best.value);
+              best           = o;
+              BoundQuality q = quality;
+              refine(objective, best, lo, hi, range, q);
+              q.n_agree = 1;
+              quality   = q;
+            }
+          else if (o.value <= best.value + tolerance)
+            ++quality.n_agree;
+          else
+            other = std::min(other, o.value);
         }
-      return best;
+      quality.other_optimum =
+        std::isfinite(other) ? (other - best.value) / (range > 0 ? range : 1.)
+                             : 0.;
     }
 
 
@@ -291,8 +415,9 @@ namespace FuzzyContact
                                                   settings.refinement_step,
                                                   noise);
       quality.refined            = true;
-      quality.last_change = search.last_change / (range > 0 ? range : 1.);
-      quality.final_step  = search.final_step;
+      quality.last_change      = search.last_change / (range > 0 ? range : 1.);
+      quality.final_step       = search.final_step;
+      quality.search_converged = search.converged;
       if (best.x != before)
         {
           objective.gradient_at(best.gradient, best.x);
@@ -312,10 +437,16 @@ namespace FuzzyContact
                          " iterations); no end of a parameter interval was "
                          "better, ";
       if (quality.refined)
-        note += "and the pattern search refined the point: the bound changed "
-                "by " +
-                format(quality.last_change) +
-                " of the output's range over its last three refinements";
+        note += "and the pattern search refined the point " +
+                std::string(quality.search_converged
+                              ? "until three halvings of its step in a row "
+                                "improved nothing (final step " +
+                                  format(quality.final_step) + " of the widths)"
+                              : "but stopped at its limits: the bound changed "
+                                "by " +
+                                  format(quality.last_change) +
+                                  " of the output's range over its last three "
+                                  "refinements");
       else
         note += "and the bound lies at a vertex with a projected gradient of " +
                 format(quality.projected_gradient);
@@ -390,19 +521,19 @@ namespace FuzzyContact
                         const std::string              &level,
                         const std::vector<std::string> &findings,
                         const bool                      missed,
-                        const unsigned int              n_starts) const
+                        const unsigned int              n_starts,
+                        const unsigned int              n_design) const
     {
       std::string note = level + ": non-monotone response (";
       for (unsigned int f = 0; f < findings.size(); ++f)
         note += (f ? "; " : "") + findings[f];
       note += ")";
-      if (settings.global_points > 0 && !missed)
-        note += "; the global stage (" +
-                std::to_string(settings.global_points) + " design points" +
-                (normalisation.n_free() < 20 ? ", the vertices" : "") +
-                ", the optima of the level above) and " +
-                std::to_string(n_starts) +
-                " local start(s) found no better point";
+      if (n_design > 0 && !missed)
+        note +=
+          "; the global stage (" + std::to_string(n_design) + " design points" +
+          (normalisation.n_free() < 20 ? ", the vertices" : "") +
+          ", the optima of the level above) and " + std::to_string(n_starts) +
+          " local start(s) found no better point";
       else if (settings.fallback)
         note += multi_start(objective, best, lo, hi);
       else
@@ -593,32 +724,129 @@ namespace FuzzyContact
     const unsigned int n_outputs = output_names.size();
     const bool         parallel  = Utilities::MPI::job_supports_mpi() &&
                           Utilities::MPI::n_mpi_processes(comm) > 1;
+    const unsigned int n_ranks =
+      parallel ? Utilities::MPI::n_mpi_processes(comm) : 1;
 
     // Every rank runs every chain on one cache shared by the ranks: each
     // distinct point is evaluated once, by one rank, as with one process.
     // The points every chain needs (the global stage's vertices and designs
-    // of every level) are evaluated first, spread over the ranks.
-    EvaluationCache                 cache(response, comm);
+    // of every level) are evaluated first, spread over the ranks; the
+    // design's evaluations are counted for the progress lines.
+    std::unique_ptr<Progress> design_progress;
+    const Response            counted = [&](const std::vector<double> &p) {
+      std::vector<double> values = response(p);
+      if (design_progress)
+        design_progress->advance();
+      return values;
+    };
+    EvaluationCache                 cache(counted, comm);
     const Normalisation             normalisation(parameters);
-    const std::vector<unsigned int> order = levels_from_the_core(alpha);
+    const unsigned int              n_free = normalisation.n_free();
+    const std::vector<unsigned int> order  = levels_from_the_core(alpha);
     const VectorType centre = centre_of_the_core(normalisation, parameters);
-    const std::vector<VectorType> design =
-      latin_hypercube(settings_.global_points,
-                      normalisation.n_free(),
-                      20261124);
+
+    // The nominal point and every level's vertices first; they time an
+    // evaluation for the global time limit (the slowest rank's time, the
+    // same number on every rank).
+    Timer vertices;
     cache.prefetch(fixed_points_of_all_levels(normalisation,
                                               parameters,
                                               alpha,
                                               order,
                                               centre,
-                                              design));
-    const std::vector<double> nominal = cache(normalisation.parameters(centre));
+                                              {}));
+    double per_evaluation = cache.n_evaluated_here() > 0
+                              ? vertices.wall_time() / cache.n_evaluated_here()
+                              : 0.;
+    if (parallel)
+      per_evaluation = Utilities::MPI::max(per_evaluation, comm);
+    unsigned int n_boxes = 0; // levels whose box is not a point
+    for (const double a : alpha)
+      {
+        const auto [lo, hi] = normalisation.box(parameters, a);
+        bool point          = true;
+        for (unsigned int i = 0; i < n_free; ++i)
+          point = point && hi[i] <= lo[i];
+        n_boxes += !point;
+      }
+    const unsigned int wanted   = settings_.global_points_auto
+                                    ? default_design_points(n_free)
+                                    : settings_.global_points;
+    unsigned int       n_design = n_free > 0 ? wanted : 0;
+    bool               cut      = false;
+    if (settings_.global_time_limit > 0 && per_evaluation > 0 && n_boxes > 0)
+      {
+        // The largest power of two that fits (a Sobol net), or none.
+        const double fits =
+          settings_.global_time_limit / (per_evaluation * n_boxes);
+        unsigned int allowed = fits >= 1 ? 1 : 0;
+        while (allowed > 0 && 2. * allowed <= fits && 2 * allowed <= n_design)
+          allowed *= 2;
+        if (allowed < n_design)
+          {
+            n_design = allowed;
+            cut      = true;
+          }
+      }
+    const std::vector<VectorType> design =
+      scrambled_sobol(n_design, n_free, 20261124);
+    {
+      const std::vector<std::vector<double>> points =
+        fixed_points_of_all_levels(normalisation,
+                                   parameters,
+                                   alpha,
+                                   order,
+                                   centre,
+                                   design);
+      design_progress = std::make_unique<Progress>(
+        "optimisation, global stage (" + std::to_string(n_design) +
+          " design points per alpha-box)" +
+          std::string(n_ranks > 1 ? ", evaluations of the first rank" : ""),
+        (points.size() + n_ranks - 1) / n_ranks);
+      cache.prefetch(points);
+      design_progress.reset();
+    }
+
+    // The points of each level's global stage without a solution.
+    std::vector<unsigned long> n_points(alpha.size()),
+      n_infeasible(alpha.size());
+    for (unsigned int l = 0; l < alpha.size(); ++l)
+      {
+        const auto [lo, hi] = normalisation.box(parameters, alpha[l]);
+        std::set<std::vector<double>> distinct;
+        for (const VectorType &x : fixed_points(design, lo, hi))
+          distinct.insert(normalisation.parameters(x));
+        n_points[l] = distinct.size();
+        for (const std::vector<double> &p : distinct)
+          n_infeasible[l] += !has_solution(cache(p));
+      }
+
+    // The objectives are scaled by the outputs at the nominal point, or,
+    // if it has no solution, at the first point with one.
+    std::vector<double> nominal = cache(normalisation.parameters(centre));
+    if (!has_solution(nominal))
+      for (const unsigned int l : order)
+        {
+          const auto [lo, hi] = normalisation.box(parameters, alpha[l]);
+          for (const VectorType &x : fixed_points(design, lo, hi))
+            if (nominal.empty())
+              nominal = cache(normalisation.parameters(x));
+        }
+    if (!has_solution(nominal))
+      nominal.assign(n_outputs, 1.);
     AssertThrow(nominal.size() == n_outputs,
                 ExcMessage(
                   "The response returned " + std::to_string(nominal.size()) +
                   " outputs instead of " + std::to_string(n_outputs) + "."));
 
     // One chain per output and direction.
+    Progress chains_progress("optimisation: bounds (output x side x level)",
+                             2 * n_outputs * alpha.size(),
+                             3.,
+                             [&]() {
+                               return std::to_string(cache.n_evaluations()) +
+                                      " evaluations";
+                             });
     std::vector<std::pair<unsigned int, ChainResult>> all;
     for (unsigned int chain = 0; chain < 2 * n_outputs; ++chain)
       {
@@ -631,10 +859,17 @@ namespace FuzzyContact
                         chain % 2,
                         nominal[k],
                         output_names[k]);
-        all.emplace_back(chain, one.run(alpha, order, centre, design));
+        all.emplace_back(
+          chain,
+          one.run(alpha, order, centre, design, &chains_progress));
       }
 
     FuzzyOutputBounds result = bounds_of_chains(all, alpha, n_outputs);
+    result.n_points          = n_points;
+    result.n_infeasible      = n_infeasible;
+    result.design_points     = n_design;
+    result.design_cut        = cut;
+    result.design_wanted     = wanted;
     // (Evaluations made over all ranks: each distinct point once.)
     result.n_evaluations =
       parallel ? Utilities::MPI::sum(cache.n_evaluated_here(), comm)

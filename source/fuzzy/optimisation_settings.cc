@@ -6,6 +6,9 @@
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/patterns.h>
+#include <deal.II/base/utilities.h>
+
+#include <string>
 
 namespace FuzzyContact
 {
@@ -59,17 +62,30 @@ namespace FuzzyContact
                       "On a detected non-monotone response, restart the "
                       "local optimisation from every vertex and the centre.");
     prm.declare_entry("global points",
-                      to_string(defaults.global_points),
-                      Patterns::Integer(0, 100000),
-                      "Points of the space-filling design (a Latin hypercube, "
-                      "fixed seed) evaluated over every alpha-box before the "
-                      "local optimisation starts from the best points.");
+                      defaults.global_points_auto
+                        ? std::string("auto")
+                        : to_string(defaults.global_points),
+                      Patterns::Anything(),
+                      "Points of the space-filling design (a scrambled Sobol "
+                      "sequence, fixed seed) evaluated over every alpha-box "
+                      "before the local searches start from the best points "
+                      "of its distinct basins: 'auto' (32 per fuzzy "
+                      "parameter, rounded up to a power of two) or a number "
+                      "from 0 (vertices and the level above's optima only) "
+                      "to 65536.");
+    prm.declare_entry("global time limit",
+                      to_string(defaults.global_time_limit),
+                      Patterns::Double(0, 1e6),
+                      "Seconds the design may take over all alpha levels (0: "
+                      "no limit); a longer one is cut to the largest power of "
+                      "two of points per box that fits, timed on the "
+                      "vertices' evaluations (the report says so).");
     prm.declare_entry("local starts",
                       to_string(defaults.local_starts),
                       Patterns::Integer(1, 100),
-                      "Local optimisations per bound and level when the best "
-                      "point of the global stage lies inside the box (one "
-                      "from the best point when it is a vertex).");
+                      "Local searches per bound and level at most: from the "
+                      "best point of the global stage and the best points of "
+                      "other basins of the design.");
     prm.declare_entry("refinement step",
                       to_string(defaults.refinement_step),
                       Patterns::Double(),
@@ -109,10 +125,31 @@ namespace FuzzyContact
                 ExcMessage("Optimisation: the finite difference step must be "
                            "well above the response tolerance (10 times at "
                            "least), or the sensitivities are noise."));
-    fallback        = prm.get_bool("multi-start fallback");
-    global_points   = prm.get_integer("global points");
-    local_starts    = prm.get_integer("local starts");
-    refinement_step = Input::positive(prm.get_double("refinement step"),
+    fallback                 = prm.get_bool("multi-start fallback");
+    const std::string points = Utilities::trim(prm.get("global points"));
+    global_points_auto       = points == "auto";
+    if (!global_points_auto)
+      {
+        std::size_t end   = 0;
+        long        value = -1;
+        try
+          {
+            value = std::stol(points, &end);
+          }
+        catch (const std::exception &)
+          {
+            end = 0;
+          }
+        AssertThrow(end > 0 && end == points.size() && value >= 0 &&
+                      value <= 65536,
+                    ExcMessage("Optimisation: global points must be auto or "
+                               "an integer from 0 to 65536, got <" +
+                               points + ">."));
+        global_points = value;
+      }
+    global_time_limit = prm.get_double("global time limit");
+    local_starts      = prm.get_integer("local starts");
+    refinement_step   = Input::positive(prm.get_double("refinement step"),
                                       "Optimisation: refinement step");
     AssertThrow(refinement_step < 0.1,
                 ExcMessage("Optimisation: refinement step must be below 0.1 "

@@ -62,7 +62,9 @@ namespace FuzzyContact
       return outputs;
     }
 
-    // Min and max of each output over the points inside each box.
+    // Min and max of each output over the points inside each box that
+    // have a solution (the others are counted); NaN bounds at a level
+    // without any.
     FuzzyOutputBounds
     bounds_over_points(const std::vector<FuzzyNumber>         &parameters,
                        const std::vector<double>              &alpha,
@@ -76,6 +78,8 @@ namespace FuzzyContact
       result.argmin.assign(n_outputs,
                            std::vector<std::vector<double>>(alpha.size()));
       result.argmax = result.argmin;
+      result.n_points.assign(alpha.size(), 0);
+      result.n_infeasible.assign(alpha.size(), 0);
       for (unsigned int l = 0; l < alpha.size(); ++l)
         {
           const std::vector<Interval> box = alpha_box(parameters, alpha[l]);
@@ -92,6 +96,12 @@ namespace FuzzyContact
                                                   std::abs(box[d].lower)));
               if (!inside)
                 continue;
+              ++result.n_points[l];
+              if (!has_solution(outputs[i]))
+                {
+                  ++result.n_infeasible[l];
+                  continue;
+                }
               any = true;
               AssertThrow(outputs[i].size() == n_outputs,
                           ExcMessage("The response returned " +
@@ -116,8 +126,11 @@ namespace FuzzyContact
                     }
                 }
             }
-          Assert(any, ExcInternalError());
-          (void)any;
+          Assert(result.n_points[l] > 0, ExcInternalError());
+          if (!any)
+            for (unsigned int k = 0; k < n_outputs; ++k)
+              result.bounds[k][l] = {std::numeric_limits<double>::quiet_NaN(),
+                                     std::numeric_limits<double>::quiet_NaN()};
         }
       return result;
     }

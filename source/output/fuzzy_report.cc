@@ -11,12 +11,31 @@ namespace FuzzyContact
 {
   namespace
   {
+    // (A level without a point with a solution has no bound: "n/a".)
     std::string
     number(const double x)
     {
+      if (std::isnan(x))
+        return "n/a";
       std::ostringstream s;
       s << std::scientific << std::setprecision(5) << x;
       return s.str();
+    }
+
+    // A bound for results.json: null where there is none.
+    nlohmann::json
+    value(const double x)
+    {
+      return std::isnan(x) ? nlohmann::json() : nlohmann::json(x);
+    }
+
+    // Whether sliding is possible at level @p l (the bounds there are over
+    // the part of the box with an equilibrium).
+    bool
+    sliding(const FuzzyStudyResults &r, const unsigned int l)
+    {
+      return r.has_equilibrium && l < r.equilibrium.levels.size() &&
+             r.equilibrium.levels[l].possible;
     }
 
     // Relative differences, with a floor for an output that is zero at
@@ -26,7 +45,8 @@ namespace FuzzyContact
     {
       double scale = 0;
       for (const Interval &i : r)
-        scale = std::max({scale, std::abs(i.lower), std::abs(i.upper)});
+        if (!std::isnan(i.lower) && !std::isnan(i.upper))
+          scale = std::max({scale, std::abs(i.lower), std::abs(i.upper)});
       return max_relative_difference(b,
                                      r,
                                      scale > 0
@@ -53,34 +73,46 @@ namespace FuzzyContact
       entry["name"]  = o.name;
       entry["unit"]  = o.unit();
       entry["alpha"] = r.alpha;
-      std::vector<double> lo, hi, rlo, rhi, vlo, vhi;
+      nlohmann::json lo, hi, rlo, rhi, vlo, vhi;
+      bool           any_sliding = false;
       for (unsigned int l = 0; l < r.alpha.size(); ++l)
         {
           const Interval b = r.optimisation.bounds[k][l];
-          lo.push_back(b.lower);
-          hi.push_back(b.upper);
+          lo.push_back(value(b.lower));
+          hi.push_back(value(b.upper));
+          any_sliding = any_sliding || sliding(r, l);
           out << "  " << std::fixed << std::setprecision(2) << r.alpha[l]
-              << "   " << std::setw(12) << number(b.lower) << " "
-              << std::setw(12) << number(b.upper);
+              << (sliding(r, l) ? "*  " : "   ") << std::setw(12)
+              << number(b.lower) << " " << std::setw(12) << number(b.upper);
           if (r.has_vertex)
             {
               const Interval v = r.vertex.bounds[k][l];
-              vlo.push_back(v.lower);
-              vhi.push_back(v.upper);
+              vlo.push_back(value(v.lower));
+              vhi.push_back(value(v.upper));
               out << "   " << std::setw(12) << number(v.lower) << " "
                   << std::setw(12) << number(v.upper);
             }
           if (r.has_reference)
             {
               const Interval e = r.reference.bounds[k][l];
-              rlo.push_back(e.lower);
-              rhi.push_back(e.upper);
+              rlo.push_back(value(e.lower));
+              rhi.push_back(value(e.upper));
               out << "   " << std::setw(12) << number(e.lower) << " "
                   << std::setw(12) << number(e.upper) << "   "
                   << std::setprecision(1) << std::scientific
                   << difference({b}, {e});
             }
           out << "\n";
+        }
+      if (any_sliding)
+        {
+          out << "  *: sliding is possible at this level; the bounds are "
+                 "over the part of the box with a static equilibrium (n/a: "
+                 "no point of the box has one)\n";
+          std::vector<bool> flags;
+          for (unsigned int l = 0; l < r.alpha.size(); ++l)
+            flags.push_back(sliding(r, l));
+          entry["sliding_possible"] = flags;
         }
       entry["lower"] = lo;
       entry["upper"] = hi;
@@ -127,11 +159,21 @@ namespace FuzzyContact
           << std::setprecision(2) << std::setw(8) << r.offline_time << " s\n"
           << "  optimisation, reduced model           " << std::setw(8)
           << r.optimisation.wall_time << " s  " << r.optimisation.n_evaluations
-          << " evaluations\n";
+          << " evaluations (global stage: " << r.optimisation.design_points
+          << " Sobol points per alpha-box"
+          << (r.optimisation.design_cut
+                ? ", cut from " + std::to_string(r.optimisation.design_wanted) +
+                    " by the global time limit: the number depends on the "
+                    "machine's speed"
+                : std::string())
+          << ")\n";
       json["time_s"]["offline"]           = r.offline_time;
       json["time_s"]["optimisation"]      = r.optimisation.wall_time;
       json["time_s"]["fuzzy_study"]       = study;
       json["evaluations"]["optimisation"] = r.optimisation.n_evaluations;
+      json["global_stage"] = {{"design_points", r.optimisation.design_points},
+                              {"design_cut_by_time_limit",
+                               r.optimisation.design_cut}};
       if (r.has_proofs)
         {
           out << "  proofs, full order at the bounds      " << std::setw(8)
@@ -259,6 +301,7 @@ namespace FuzzyContact
       const std::string inert = FuzzyStudyReport::inert(r, json);
       if (!inert.empty())
         report.say("\nparameters that cannot change the answer:\n" + inert);
+      report.say(FuzzyStudyReport::equilibrium(r, json));
       json["outputs"] = nlohmann::json::array();
       for (unsigned int k = 0; k < r.outputs.size(); ++k)
         {

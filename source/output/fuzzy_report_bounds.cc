@@ -18,12 +18,23 @@ namespace FuzzyContact
     std::string
     sci(const double x, const int digits = 1)
     {
+      if (std::isnan(x))
+        return "n/a";
       std::ostringstream s;
       s << std::scientific << std::setprecision(digits) << x;
       return s.str();
     }
 
-    // "vertex", "boundary (P1.E)", "interior, kink in P1.tip.force".
+    // A number for results.json: null for NaN (no bound, or no exact
+    // value: no static equilibrium there).
+    nlohmann::json
+    value(const double x)
+    {
+      return std::isnan(x) ? nlohmann::json() : nlohmann::json(x);
+    }
+
+    // "vertex", "boundary (P1.E)", "interior, kink in P1.tip.force",
+    // "boundary, edge of equilibrium in interface.mu".
     std::string
     shape(const BoundQuality &q, const std::vector<FuzzyParameter> &p)
     {
@@ -34,7 +45,40 @@ namespace FuzzyContact
           for (const unsigned int i : q.kinks)
             text += " " + p[i].quantity.name;
         }
+      if (!q.edge.empty())
+        {
+          text += ", edge of equilibrium in";
+          for (const unsigned int i : q.edge)
+            text += " " + p[i].quantity.name;
+        }
       return text;
+    }
+
+    // What was searched for a bound not shown converged, and why not.
+    std::string
+    searched(const BoundQuality &q)
+    {
+      std::ostringstream s;
+      s << q.n_design << " points of the global stage, " << q.n_roots
+        << " basin root(s), " << q.n_starts
+        << " local search(es) from distinct basins, " << q.n_agree
+        << " reached the bound";
+      if (q.other_optimum > 0)
+        s << " (another basin's best lies " << sci(q.other_optimum)
+          << " of the range away)";
+      if (!q.basins_searched)
+        s << "; the design showed more basins than 'local starts' searched";
+      if (q.design_better)
+        s << "; a point of the global stage was better than every local "
+             "search";
+      if (q.refined)
+        s << "; the pattern search "
+          << (q.search_converged ? "converged" : "stopped at its limits")
+          << " (final step " << sci(q.final_step) << " of the widths, last "
+          << "change " << sci(q.last_change) << " of the range)";
+      else
+        s << "; projected gradient " << sci(q.projected_gradient);
+      return s.str();
     }
 
     // The convergence measure of a bound: the pattern search's last change
@@ -57,11 +101,23 @@ namespace FuzzyContact
                std::string(key) == "kinks" ? q.kinks : q.interior)
             j[key].push_back(p[i].quantity.name);
         }
-      j["projected_gradient"] = q.projected_gradient;
-      j["refined"]            = q.refined;
-      j["last_change"]        = q.last_change;
-      j["final_step"]         = q.final_step;
-      j["iteration_limit"]    = q.iteration_limit;
+      j["projected_gradient"]  = q.projected_gradient;
+      j["refined"]             = q.refined;
+      j["last_change"]         = q.last_change;
+      j["final_step"]          = q.final_step;
+      j["iteration_limit"]     = q.iteration_limit;
+      j["edge_of_equilibrium"] = nlohmann::json::array();
+      for (const unsigned int i : q.edge)
+        j["edge_of_equilibrium"].push_back(p[i].quantity.name);
+      j["converged"]        = q.converged;
+      j["search_converged"] = q.search_converged;
+      j["n_design"]         = q.n_design;
+      j["n_basin_roots"]    = q.n_roots;
+      j["n_starts"]         = q.n_starts;
+      j["n_agree"]          = q.n_agree;
+      j["other_optimum"]    = q.other_optimum;
+      j["design_better"]    = q.design_better;
+      j["basins_searched"]  = q.basins_searched;
       return j;
     }
 
@@ -73,10 +129,11 @@ namespace FuzzyContact
       for (const FuzzyOutputBounds *b : {&r.optimisation, &r.reference})
         if (b->bounds.size() > k)
           for (const Interval &i : b->bounds[k])
-            {
-              lo = std::min(lo, i.lower);
-              hi = std::max(hi, i.upper);
-            }
+            if (!std::isnan(i.lower) && !std::isnan(i.upper))
+              {
+                lo = std::min(lo, i.lower);
+                hi = std::max(hi, i.upper);
+              }
       return hi > lo ? hi - lo : 0.;
     }
   } // namespace
@@ -97,9 +154,10 @@ namespace FuzzyContact
                        "factorisations the model was built from; "
                      : "")
           << "conv.: change of the bound over its last refinements, or "
-             "its projected gradient, relative to the output's range)\n"
+             "its projected gradient, relative to the output's range, and "
+             "whether the bound is shown converged)\n"
           << "  alpha   " << (proved ? "lower: red.-exact " : "lower: ")
-          << std::left << std::setw(34) << "shape" << std::setw(10) << "conv."
+          << std::left << std::setw(34) << "shape" << std::setw(14) << "conv."
           << (proved ? "upper: red.-exact " : "upper: ") << std::setw(34)
           << "shape"
           << "conv.\n"
@@ -120,14 +178,18 @@ namespace FuzzyContact
                   const BoundProof &p =
                     upper ? r.proofs.upper[k][l] : r.proofs.lower[k][l];
                   out << std::setw(10) << sci(p.difference()) << "        ";
-                  proof[side + "_reduced"].push_back(p.reduced);
-                  proof[side + "_exact"].push_back(p.exact);
-                  proof[side + "_difference"].push_back(p.difference());
+                  proof[side + "_reduced"].push_back(value(p.reduced));
+                  proof[side + "_exact"].push_back(value(p.exact));
+                  proof[side + "_difference"].push_back(value(p.difference()));
                 }
               else
                 out << "       ";
-              out << std::left << std::setw(34) << shape(q, r.parameters)
-                  << std::setw(10) << sci(convergence(q)) << std::right;
+              out << std::left << std::setw(34) << shape(q, r.parameters) << " "
+                  << std::setw(14)
+                  << (q.where == "none"
+                        ? std::string("n/a")
+                        : sci(convergence(q)) + (q.converged ? " yes" : " NO"))
+                  << std::right;
               shapes[side].push_back(to_json(q, r.parameters));
             }
           out << "\n";
@@ -139,7 +201,8 @@ namespace FuzzyContact
           double largest = 0;
           for (const auto *side : {&r.proofs.lower[k], &r.proofs.upper[k]})
             for (const BoundProof &p : *side)
-              largest = std::max(largest, std::abs(p.difference()));
+              if (!std::isnan(p.difference()))
+                largest = std::max(largest, std::abs(p.difference()));
           const double range = range_of(r, k);
           proof["max_abs_difference_over_range"] =
             range > 0 ? largest / range : largest;
@@ -149,6 +212,33 @@ namespace FuzzyContact
                             : std::string())
               << "\n";
         }
+
+      // The bounds not shown converged: what was searched for each.
+      nlohmann::json not_converged = nlohmann::json::array();
+      for (unsigned int l = 0; l < r.alpha.size(); ++l)
+        for (const bool upper : {false, true})
+          {
+            const BoundQuality &q = upper ? r.optimisation.upper_quality[k][l]
+                                          : r.optimisation.lower_quality[k][l];
+            if (q.converged || q.where == "none")
+              continue;
+            std::ostringstream level;
+            level << std::fixed << std::setprecision(2) << r.alpha[l];
+            out << "  not shown converged: " << (upper ? "upper" : "lower")
+                << " bound at alpha = " << level.str() << ": " << searched(q)
+                << "\n";
+            not_converged.push_back({{"alpha", r.alpha[l]},
+                                     {"side", upper ? "upper" : "lower"},
+                                     {"searched", searched(q)}});
+          }
+      entry["converged"]     = not_converged.empty();
+      entry["not_converged"] = not_converged;
+      if (!not_converged.empty())
+        out << "warning: " << r.outputs[k].name << ": " << not_converged.size()
+            << " bound(s) not shown converged (the design showed more "
+               "basins than were searched and the searches disagree, or a "
+               "search stopped at its limits, or the design found a better "
+               "point); they are the best points found\n";
 
       // Kinks and interior optima, per side.
       for (const bool upper : {false, true})
@@ -190,14 +280,17 @@ namespace FuzzyContact
             const BoundProof &p =
               upper ? r.proofs.upper[k][l] : r.proofs.lower[k][l];
             const Interval &ref = r.reference.bounds[k][l];
-            const auto      c   = compare_with_reference(p.reduced,
+            if (std::isnan(p.reduced) || std::isnan(p.exact) ||
+                std::isnan(ref.lower) || std::isnan(ref.upper))
+              continue; // (no bound there, or no equilibrium at it)
+            const auto c = compare_with_reference(p.reduced,
                                                   p.exact,
                                                   upper ? ref.upper : ref.lower,
                                                   upper,
                                                   range);
-            short_of            = std::max(short_of, c.short_of_reference);
-            missed              = std::max(missed, c.reference_missed);
-            unverified          = std::max(unverified, c.outside_not_verified);
+            short_of     = std::max(short_of, c.short_of_reference);
+            missed       = std::max(missed, c.reference_missed);
+            unverified   = std::max(unverified, c.outside_not_verified);
             n_missed += c.reference_missed > 0;
             n_unverified += c.outside_not_verified > 0;
           }

@@ -65,12 +65,15 @@ namespace FuzzyContact
         {
           data << "# " << panels[p].title << ": " << curve.label << "\n";
           const unsigned int n = curve.alpha.size();
+          // (A level without a bound, NaN, is left out.)
           for (unsigned int l = 0; l < n; ++l)
-            data << curve.bounds[l].lower / panels[p].scale << " "
-                 << curve.alpha[l] << "\n";
+            if (std::isfinite(curve.bounds[l].lower))
+              data << curve.bounds[l].lower / panels[p].scale << " "
+                   << curve.alpha[l] << "\n";
           for (unsigned int l = n; l-- > 0;)
-            data << curve.bounds[l].upper / panels[p].scale << " "
-                 << curve.alpha[l] << "\n";
+            if (std::isfinite(curve.bounds[l].upper))
+              data << curve.bounds[l].upper / panels[p].scale << " "
+                   << curve.alpha[l] << "\n";
           data << "\n\n";
           blocks[p].push_back(block++);
         }

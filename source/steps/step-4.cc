@@ -43,7 +43,9 @@
 #include <fuzzycontact/base/rank_timers.h>
 #include <fuzzycontact/fuzzy/bound_proof.h>
 #include <fuzzycontact/fuzzy/extension_principle.h>
+#include <fuzzycontact/fuzzy/feasible_region.h>
 #include <fuzzycontact/fuzzy/fuzzy_parameters.h>
+#include <fuzzycontact/fuzzy/global_stage.h>
 #include <fuzzycontact/fuzzy/optimisation_method.h>
 #include <fuzzycontact/fuzzy/vertex_method.h>
 #include <fuzzycontact/output/fuzzy_report.h>
@@ -62,6 +64,7 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -341,17 +344,51 @@ namespace Step4
       return bounds_on_ranks(method, numbers, alpha, response, names, comm, by);
     };
 
+    // A body held by contact alone slides where no friction forces can hold
+    // its load: where in every box that happens (the fuzzy output "sliding
+    // possible"). The methods bound the outputs over the rest.
+    if (model->can_lose_equilibrium())
+      {
+        TimerOutput::Scope scope(timer, "static equilibrium (every box)");
+        const unsigned int n_free = [&]() {
+          unsigned int n = 0;
+          for (const FuzzyNumber &f : numbers)
+            n += f.alpha_cut(0).width() > 0;
+          return n;
+        }();
+        results.equilibrium = feasible_region_on_ranks(
+          numbers,
+          alpha,
+          [&](const std::vector<double> &p) {
+            return model->has_static_equilibrium(p);
+          },
+          LocalOptimisation::default_design_points(n_free),
+          comm,
+          model->reduced_communicator());
+        results.has_equilibrium = true;
+        results.free_bodies     = model->bodies_held_by_contact();
+      }
+
     results.optimisation = bounds(OptimisationMethod(parameters.optimisation),
                                   reduced,
                                   "optimisation (reduced model)");
     {
       // Every bound's proof: its argument once more, exactly, on the
       // factorisations of the offline build (shared by the ranks, in the
-      // proofs' time).
+      // proofs' time). A level without a bound, or an exact solve without
+      // equilibrium, has no exact value (NaN, said in the report).
       const double       shared = model->share_factorisations(&timer);
       TimerOutput::Scope scope(timer, "proofs (full order at the bounds)");
       model->set_reuse_factorisations(true);
-      results.proofs = prove_bounds(results.optimisation, exact, comm);
+      const Response proved = [&](const std::vector<double> &p) {
+        std::vector<double> values;
+        if (!p.empty())
+          values = model->full_order(p);
+        if (!has_solution(values))
+          values.assign(names.size(), std::numeric_limits<double>::quiet_NaN());
+        return values;
+      };
+      results.proofs = prove_bounds(results.optimisation, proved, comm);
       results.proofs.wall_time += shared;
       results.has_proofs = true;
     }
@@ -396,6 +433,8 @@ namespace Step4
   FuzzyStudy::write_output()
   {
     results.ranks = model->work_per_rank();
+    results.n_at_limit =
+      Utilities::MPI::sum(model->n_at_limit_of_equilibrium(), comm);
     nlohmann::json json;
     FuzzyStudyReport::bounds(results, report, json);
     json["contact_solver"] = model->contact_solver();

@@ -162,6 +162,10 @@ namespace FuzzyContact
                                       solver_name == "fl2c" ? "FL2C"
                                                             : solver_name);
     full_model = std::make_unique<FullOrderModel>(*bodies, outputs->dofs());
+    for (unsigned int c = 0; c < bodies->n_components(); ++c)
+      if (!bodies->component(c).free_motion_names().empty())
+        held_by_contact +=
+          (held_by_contact.empty() ? "" : ", ") + bodies->component(c).name();
 
     // The ranks that can solve the reduced model (all but where some
     // components are re-analysed: the first rank).
@@ -309,20 +313,39 @@ namespace FuzzyContact
   }
 
 
+  bool
+  FuzzyContactModel::can_lose_equilibrium() const
+  {
+    return !bodies_held_by_contact().empty();
+  }
+
+
+  std::string
+  FuzzyContactModel::bodies_held_by_contact() const
+  {
+    return held_by_contact;
+  }
+
+
+  bool
+  FuzzyContactModel::has_static_equilibrium(const std::vector<double> &values)
+  {
+    if (!can_lose_equilibrium())
+      return true;
+    bool feasible = true;
+    at_point(values, "the equilibrium check", [&]() {
+      reduced_model->set_state(state(values));
+      feasible = FuzzyContact::has_static_equilibrium(reduced_model->problem());
+      return std::vector<double>();
+    });
+    return feasible;
+  }
+
+
   std::vector<double>
   FuzzyContactModel::reduced(const std::vector<double> &values)
   {
-    return at_point(values,
-                    "the reduced model (" +
-                      (solver_name == "fl2c" ? std::string("FL2C")
-                                             : solver_name) +
-                      ")",
-                    [&]() {
-                      reduced_model->set_state(state(values));
-                      return reduced_from_neighbour(values, [&]() {
-                        return reduced_model->solve();
-                      });
-                    });
+    return reduced(values, nullptr);
   }
 
 
@@ -330,11 +353,52 @@ namespace FuzzyContact
   FuzzyContactModel::reduced(const std::vector<double> &values,
                              const ContactSolver       &solver)
   {
-    return at_point(values, "the reduced model (" + solver.name() + ")", [&]() {
+    return reduced(values, &solver);
+  }
+
+
+  bool
+  FuzzyContactModel::at_limit_of_equilibrium()
+  {
+    // The reduced problem of the current state with every friction
+    // coefficient lowered by the margin.
+    ContactProblem problem = reduced_model->problem();
+    for (double &mu : problem.mu)
+      mu *= 1 - limit_margin;
+    return !FuzzyContact::has_static_equilibrium(problem);
+  }
+
+
+  std::vector<double>
+  FuzzyContactModel::reduced(const std::vector<double> &values,
+                             const ContactSolver       *solver)
+  {
+    const std::string name = solver != nullptr       ? solver->name()
+                             : solver_name == "fl2c" ? std::string("FL2C")
+                                                     : solver_name;
+    return at_point(values, "the reduced model (" + name + ")", [&]() {
       reduced_model->set_state(state(values));
-      return reduced_from_neighbour(values, [&]() {
-        return reduced_model->solve(solver);
-      });
+      // No static equilibrium: no outputs (a result of this point).
+      if (can_lose_equilibrium() &&
+          !FuzzyContact::has_static_equilibrium(reduced_model->problem()))
+        return std::vector<double>();
+      try
+        {
+          return reduced_from_neighbour(values, [&]() {
+            return solver != nullptr ? reduced_model->solve(*solver)
+                                     : reduced_model->solve();
+          });
+        }
+      catch (const ExceptionBase &)
+        {
+          // At the limit of equilibrium the static answer is degenerate
+          // (a body about to slide may slip any amount): a solver that
+          // fails there counts the point as without equilibrium.
+          if (!can_lose_equilibrium() || !at_limit_of_equilibrium())
+            throw;
+          ++n_limit_points;
+          return std::vector<double>();
+        }
     });
   }
 
@@ -361,8 +425,35 @@ namespace FuzzyContact
   {
     return at_point(values, "the exact full-order reference", [&]() {
       full_model->set_state(state(values));
-      return outputs->values(full_model->solve());
+      try
+        {
+          return outputs->values(full_model->solve());
+        }
+      catch (const ExcNoStaticEquilibrium &)
+        {
+          // A result of this point: the exact solver found no contact
+          // forces in the friction cones that balance the load.
+          return std::vector<double>();
+        }
+      catch (const ExceptionBase &)
+        {
+          // (As in reduced(), where the reduced problem is at hand.)
+          if (!can_lose_equilibrium() || reduced_ranks == MPI_COMM_NULL)
+            throw;
+          reduced_model->set_state(state(values));
+          if (!at_limit_of_equilibrium())
+            throw;
+          ++n_limit_points;
+          return std::vector<double>();
+        }
     });
+  }
+
+
+  unsigned long
+  FuzzyContactModel::n_at_limit_of_equilibrium() const
+  {
+    return n_limit_points;
   }
 
 

@@ -1,5 +1,6 @@
 // Progress lines for the long stages (the offline build on large meshes,
-// the reference's sampling): what is done out of how much, the elapsed and
+// the optimisation's global stage and bounds, the reference's sampling):
+// what is done out of how much, the elapsed and
 // the estimated remaining time, at most one line every few seconds, on
 // standard error so that standard output stays the report.
 //
@@ -16,6 +17,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 
+#include <functional>
 #include <string>
 
 namespace FuzzyContact
@@ -66,20 +68,23 @@ namespace FuzzyContact
     line(const std::string &what,
          const unsigned int done,
          const unsigned int total,
-         const double       elapsed);
+         const double       elapsed,
+         const std::string &detail = "");
   } // namespace ProgressLines
 
   /**
    * Counts the steps of one long loop and prints "<what>: 120/641 (19 %),
    * 3.1 s elapsed, about 13 s left" at most every @p interval seconds, and
-   * a last line when all are done if any line was printed.
+   * a last line when all are done if any line was printed; @p detail, if
+   * given, adds its text after the count ("..., 4210 evaluations, ...").
    */
   class Progress
   {
   public:
-    Progress(const std::string &what,
-             const unsigned int total,
-             const double       interval = 3.);
+    Progress(const std::string                  &what,
+             const unsigned int                  total,
+             const double                        interval = 3.,
+             const std::function<std::string()> &detail   = {});
     ~Progress();
 
     void
@@ -89,13 +94,14 @@ namespace FuzzyContact
     void
     print() const;
 
-    std::string  what;
-    unsigned int total;
-    unsigned int done = 0;
-    double       interval;
-    double       last_line;
-    bool         printed = false;
-    Timer        timer;
+    std::string                  what;
+    std::function<std::string()> detail;
+    unsigned int                 total;
+    unsigned int                 done = 0;
+    double                       interval;
+    double                       last_line;
+    bool                         printed = false;
+    Timer                        timer;
   };
 } // namespace FuzzyContact
 

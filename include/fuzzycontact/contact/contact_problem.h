@@ -66,6 +66,7 @@
 #ifndef fuzzycontact_contact_contact_problem_h
 #define fuzzycontact_contact_contact_problem_h
 
+#include <deal.II/base/exceptions.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -414,6 +415,27 @@ namespace FuzzyContact
   check_equilibrium(const LoadStep            &step,
                     const std::vector<double> &mu,
                     const std::string         &what);
+
+  /**
+   * What check_equilibrium() throws (its message says why and what
+   * friction would hold the body). A study that varies loads or friction
+   * coefficients takes it as a result of the point, not as a failure
+   * (study/fuzzy_contact_model.h).
+   */
+  DeclException1(ExcNoStaticEquilibrium, std::string, << arg1);
+
+  /**
+   * Whether the problem's loads at @p load_factor have a static
+   * equilibrium (check_equilibrium() without the throw): true without
+   * bodies held by contact alone; else admissible_forces() at the end of
+   * every load stage (the resultants an equilibrium can take form a convex
+   * cone, so the stages' ends decide for every step between them). It
+   * depends on the friction coefficients, the loads and the geometry (the
+   * free motions' gaps G), not on the stiffness.
+   */
+  bool
+  has_static_equilibrium(const ContactProblem &problem,
+                         const double          load_factor = 1.);
 
   /**
    * Forces @p p in the friction cones of the nodes (coefficients @p mu)

@@ -21,6 +21,14 @@
 // provided the response is a pure function of its parameters (no state
 // carried between evaluations).
 //
+// A response may have no solution at some points (a contact problem whose
+// loads no friction forces can hold: no static equilibrium): it then
+// returns no outputs (an empty vector). Every method leaves such points out
+// and bounds the outputs over the part of each box where the response has
+// a solution; FuzzyOutputBounds counts, per level, the points it evaluated
+// in the box and those without a solution, and a level where it found none
+// has no bounds (NaN, and no arguments).
+//
 // To add an interval method: derive from IntervalMethod and implement name()
 // and bounds() in a header and source file of their own in fuzzy/; a method
 // that evaluates a set of points fixed in advance derives from
@@ -40,9 +48,19 @@
 
 namespace FuzzyContact
 {
-  /** A model: values of the parameters in, values of the outputs out. */
+  /**
+   * A model: values of the parameters in, values of the outputs out; no
+   * outputs (an empty vector) where it has no solution (see above).
+   */
   using Response =
     std::function<std::vector<double>(const std::vector<double> &)>;
+
+  /** Whether @p outputs of a Response are a solution (not empty). */
+  inline bool
+  has_solution(const std::vector<double> &outputs)
+  {
+    return !outputs.empty();
+  }
 
   /**
    * Remembers every evaluation of a response (keyed by the exact parameter
@@ -133,13 +151,56 @@ namespace FuzzyContact
     double final_step  = 0;
     /** ROL stopped at its iteration limit from the start that won. */
     bool iteration_limit = false;
+    /**
+     * Interior parameters along which a neighbour of the bound has no
+     * solution: the bound lies at the edge of the part of the box where
+     * the response has one.
+     */
+    std::vector<unsigned int> edge;
+
+    /** What was searched: points of the global stage (vertices, design,
+     * the optima of the level above) with a solution, roots of their
+     * nearest-better clustering, local searches started from distinct
+     * basins, and how many of these reached the bound (to the agreement
+     * tolerance: the larger of 10 response tolerances and 1e-6 of the
+     * range). */
+    unsigned long n_design = 0;
+    unsigned int  n_roots  = 0;
+    unsigned int  n_starts = 0;
+    unsigned int  n_agree  = 0;
+    /**
+     * How far the best local optimum of another basin that did not reach
+     * the bound lies from it, relative to the range (0 if all agreed).
+     */
+    double other_optimum = 0;
+    /**
+     * Every basin the design showed was searched (each root of its
+     * clustering a start, or in the basin of one).
+     */
+    bool basins_searched = true;
+    /** A point of the global stage was better than every local search. */
+    bool design_better = false;
+    /** The pattern search stopped converged (not at a limit). */
+    bool search_converged = false;
+    /**
+     * The bound is called converged only with evidence: first-order
+     * optimal at a vertex (projected gradient 0), or refined by a pattern
+     * search that stopped converged; no point of the global stage better
+     * than the local searches; and, where the design showed several
+     * basins, the searches from at least two of them reached the bound or
+     * every basin it showed was searched (the bound is the best of their
+     * optima).
+     */
+    bool converged = false;
 
     template <class Archive>
     void
     serialize(Archive &ar, const unsigned int)
     {
       ar &where &interior &kinks &projected_gradient &refined &last_change
-        &final_step &iteration_limit;
+        &final_step &iteration_limit &edge &n_design &n_roots &n_starts &n_agree
+          &other_optimum &basins_searched &design_better &search_converged
+            &converged;
     }
   };
 
@@ -165,19 +226,34 @@ namespace FuzzyContact
      * optimisation method only; empty for the sampling methods).
      */
     std::vector<std::vector<BoundQuality>> lower_quality, upper_quality;
+    /**
+     * Per level: the distinct points the method evaluated in the level's
+     * box (for the optimisation, those of its global stage) and how many
+     * of them had no solution (left out of the bounds).
+     */
+    std::vector<unsigned long> n_points, n_infeasible;
+    /**
+     * The optimisation's design: points per alpha-box, and whether the
+     * global time limit cut it (then the number depends on the machine).
+     */
+    unsigned int design_points = 0, design_wanted = 0;
+    bool         design_cut = false;
 
     template <class Archive>
     void
     serialize(Archive &ar, const unsigned int)
     {
       ar &alpha &bounds &argmin &argmax &n_evaluations &wall_time &notes
-        &lower_quality &upper_quality;
+        &lower_quality &upper_quality &n_points &n_infeasible &design_points
+          &design_wanted &design_cut;
     }
   };
 
   /**
    * Largest relative difference between two sets of bounds over all levels
-   * and both ends, for one output: max |b - r| / max(|r|, floor).
+   * and both ends, for one output: max |b - r| / max(|r|, floor), over the
+   * bounds that both have (not NaN: a level without a point with a
+   * solution).
    */
   double
   max_relative_difference(const std::vector<Interval> &bounds,

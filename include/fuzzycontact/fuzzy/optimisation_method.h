@@ -108,17 +108,30 @@ namespace FuzzyContact
     /** Multi-start on detected non-monotonicity. */
     bool fallback = true;
     /**
-     * Points of the space-filling design (a Latin hypercube with a fixed
-     * seed) evaluated over each level's box before the local optimisation
-     * (0: vertices and the level above's optima only).
+     * Points of the space-filling design (a scrambled Sobol sequence with
+     * a fixed seed, global_stage.h) evaluated over each level's box before
+     * the local optimisation: with global_points_auto (the key's "auto",
+     * the default) 32 per free parameter rounded up to a power of two
+     * (default_design_points()), else global_points (0: vertices and the
+     * level above's optima only).
      */
-    unsigned int global_points = 32;
+    bool         global_points_auto = true;
+    unsigned int global_points      = 0;
     /**
-     * Local optimisations per bound and level when the best point of the
-     * global stage is not a vertex (from the best points, a quarter of the
-     * box apart); one from the best point otherwise.
+     * Seconds the design may take over all levels (0: no limit): where the
+     * vertices' evaluations say it would take longer, it is cut to the
+     * largest power of two of points per box that fits (the report says
+     * so: the number then depends on the machine's speed).
      */
-    unsigned int local_starts = 2;
+    double global_time_limit = 60;
+    /**
+     * Local optimisations per bound and level at most: from the best point
+     * of the global stage and from the best points of other basins of the
+     * design (nearest-better clustering confirmed by a hill-valley test,
+     * global_stage.h), so that a bound is called converged only where the
+     * searches from distinct basins agree.
+     */
+    unsigned int local_starts = 3;
     /**
      * The pattern search that refines a bound with interior coordinates
      * stops when its step falls below this fraction of the intervals'

@@ -10,6 +10,7 @@
 #define fuzzycontact_output_fuzzy_report_h
 
 #include <fuzzycontact/fuzzy/bound_proof.h>
+#include <fuzzycontact/fuzzy/feasible_region.h>
 #include <fuzzycontact/fuzzy/fuzzy_parameters.h>
 #include <fuzzycontact/fuzzy/interval_method.h>
 #include <fuzzycontact/output/output_files.h>
@@ -49,6 +50,20 @@ namespace FuzzyContact
     std::vector<std::string> inert;
     /** What each MPI rank assembled and factorised. */
     std::vector<RankWork> ranks;
+    /**
+     * Where the bodies held by contact alone (@p free_bodies) have a
+     * static equilibrium; has_equilibrium: the check ran (some body is
+     * held by contact alone).
+     */
+    FeasibleRegion equilibrium;
+    bool           has_equilibrium = false;
+    std::string    free_bodies;
+    /**
+     * Evaluations (over all ranks) at the limit of equilibrium whose solve
+     * failed, counted as without equilibrium
+     * (FuzzyContactModel::n_at_limit_of_equilibrium()).
+     */
+    unsigned long n_at_limit = 0;
   };
 
   namespace FuzzyStudyReport
@@ -100,6 +115,16 @@ namespace FuzzyContact
                const unsigned int       k,
                std::ostringstream      &out,
                nlohmann::json          &entry);
+
+    /**
+     * Where sliding is possible (fuzzy_report_equilibrium.cc): the fuzzy
+     * output "sliding possible", the share of every box with a static
+     * equilibrium and the points each method left out; the text for the
+     * report (empty without bodies held by contact alone), and
+     * json["static_equilibrium"].
+     */
+    std::string
+    equilibrium(const FuzzyStudyResults &results, nlohmann::json &json);
 
     /** The parameters that cannot change the answer, if any. */
     std::string

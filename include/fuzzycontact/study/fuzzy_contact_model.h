@@ -20,6 +20,16 @@
 // Both are pure functions of the parameters (no state carried from one
 // evaluation to the next affects the result), so that the interval methods
 // may evaluate them in any order and on any number of MPI ranks.
+//
+// A body held by contact alone can slide: at parameter values (a low
+// friction coefficient, a large push) where no contact forces in the
+// friction cones balance its load, the problem has no static solution.
+// That is a result of the point, not an error: both reduced() and
+// full_order() then return no outputs (an empty vector, the interval
+// methods' mark of a point without a solution, interval_method.h), and
+// has_static_equilibrium() tells it cheaply (it depends on the loads, the
+// friction coefficients and the geometry only: an NNLS problem on the
+// friction cones' edges, contact_problem.h).
 
 #ifndef fuzzycontact_study_fuzzy_contact_model_h
 #define fuzzycontact_study_fuzzy_contact_model_h
@@ -136,7 +146,10 @@ namespace FuzzyContact
     std::string
     contact_solver() const;
 
-    /** The fast answer at @p values (one per fuzzy parameter). */
+    /**
+     * The fast answer at @p values (one per fuzzy parameter); empty where
+     * the loads have no static equilibrium (see the top of this file).
+     */
     std::vector<double>
     reduced(const std::vector<double> &values);
 
@@ -147,9 +160,47 @@ namespace FuzzyContact
     std::vector<double>
     reduced(const std::vector<double> &values, const ContactSolver &solver);
 
-    /** The exact answer at @p values. */
+    /**
+     * The exact answer at @p values; empty where the loads have no static
+     * equilibrium (see the top of this file).
+     */
     std::vector<double>
     full_order(const std::vector<double> &values);
+
+    /**
+     * True if some body is held by contact alone: then some values of the
+     * loads and friction coefficients may have no static equilibrium.
+     */
+    bool
+    can_lose_equilibrium() const;
+
+    /** The names of the bodies held by contact alone, comma-separated. */
+    std::string
+    bodies_held_by_contact() const;
+
+    /**
+     * Whether the loads at @p values have a static equilibrium
+     * (has_static_equilibrium() of contact_problem.h on the reduced
+     * problem, whose free motions and load resultants are exact): no
+     * contact solve, a few microseconds to a millisecond. Only on the
+     * ranks of reduced_communicator().
+     */
+    bool
+    has_static_equilibrium(const std::vector<double> &values);
+
+    /**
+     * At the limit of equilibrium (the loads need all but a relative
+     * 1e-6 of every friction coefficient) the static answer is degenerate:
+     * a body about to slide may slip any amount, and the contact solvers
+     * can fail there. reduced() and full_order() count such a point whose
+     * solve failed as without equilibrium (no outputs) instead of an
+     * error; how many they counted on this rank so far.
+     */
+    unsigned long
+    n_at_limit_of_equilibrium() const;
+
+    /** The margin of the limit of equilibrium, relative to mu. */
+    static constexpr double limit_margin = 1e-6;
 
     /** See FullOrderModel; default false. */
     void
@@ -222,6 +273,16 @@ namespace FuzzyContact
               TimerOutput                        *timer,
               const MPI_Comm                      comm);
 
+    // Whether the reduced problem of the current state is at the limit
+    // of equilibrium (see n_at_limit_of_equilibrium()).
+    bool
+    at_limit_of_equilibrium();
+
+    // The reduced model's answer with @p solver, or with the model's own
+    // solver if null.
+    std::vector<double>
+    reduced(const std::vector<double> &values, const ContactSolver *solver);
+
     // @p evaluate(), its failure rethrown with the parameter point and the
     // @p model that failed.
     std::vector<double>
@@ -247,15 +308,17 @@ namespace FuzzyContact
     std::unique_ptr<ReducedOrderModel> reduced_model;
     std::unique_ptr<FullOrderModel>    full_model;
     // The reduced model's contact states at the points evaluated so far.
-    WarmStarts                warm_starts;
-    std::string               solver_name;
-    std::string               skipped_stages;
-    std::vector<std::string>  inert_parameters;
-    MPI_Comm                  comm;
-    MPI_Comm                  reduced_ranks     = MPI_COMM_NULL;
-    bool                      own_reduced_ranks = false;
-    std::vector<unsigned int> builder; // the rank of each component
-    unsigned int              n_ranks_building = 1;
+    WarmStarts warm_starts;
+    std::string                        solver_name;
+    std::string                        skipped_stages;
+    std::vector<std::string>           inert_parameters;
+    std::string                        held_by_contact;
+    unsigned long                      n_limit_points = 0;
+    MPI_Comm                           comm;
+    MPI_Comm                           reduced_ranks     = MPI_COMM_NULL;
+    bool                               own_reduced_ranks = false;
+    std::vector<unsigned int>          builder; // the rank of each component
+    unsigned int                       n_ranks_building = 1;
   };
 } // namespace FuzzyContact
 
