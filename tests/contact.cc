@@ -6,6 +6,7 @@
 // from small matrices), and the hard and bad cases. All on the 1510-DoF
 // meshes (a few on 5418), so that the whole file runs in seconds.
 
+#include <fuzzycontact/base/factor_preconditioned_cg.h>
 #include <fuzzycontact/base/input.h>
 #include <fuzzycontact/base/sparse_direct_solver.h>
 #include <fuzzycontact/contact/active_set_solver.h>
@@ -24,6 +25,7 @@
 #include <fuzzycontact/modal/modal_solver.h>
 #include <fuzzycontact/output/contact_report.h>
 #include <fuzzycontact/reduction/reduced_model.h>
+#include <fuzzycontact/reduction/zone_static_correction.h>
 #include <fuzzycontact/scene/scene.h>
 #include <fuzzycontact/scene/scene_state.h>
 #include <fuzzycontact/study/contact_scene.h>
@@ -1460,6 +1462,237 @@ TEST(ReducedModel, RebuildsFromSmallMatricesForNewModuli)
   Vector<double>            dg = scaled.problem().g_load;
   dg -= fresh.problem().g_load;
   EXPECT_LE(dg.l2_norm(), 1e-14 * fresh.problem().g_load.l2_norm());
+}
+
+namespace
+{
+  // overlap with P2 in two zones: "under" (x < 0.24), which carries every
+  // contact node and the master segments under P1's tip, and "rest".
+  Scene
+  overlap_with_a_zone_under_the_contact()
+  {
+    Scene                 scene = Scene::read(source_dir + "/prm/overlap.prm");
+    ComponentDescription &p2    = scene.components[1];
+    p2.implicit_zone            = false;
+    p2.zones                    = {
+                         MaterialZone{"under", {{0.1, 0.24}}, {{-1, 1}}, 210e9, 0.3, 7900},
+                         MaterialZone{"rest", {{0.24, 0.3}}, {{-1, 1}}, 210e9, 0.3, 7900}};
+    return scene;
+  }
+} // namespace
+
+// The zone under the contact moves by +-50 %. The static correction
+// re-analysed by Krylov vectors (reduction/zone_static_correction.h) gives
+// the contact flexibility, the load gaps and the contact answer of the
+// exact stiffness: against FullOrderContact on a new factorisation, at the
+// corners of the range and inside it, to 1e-8 (the tolerance asked for is
+// 1e-9); the nominal static correction (what 'residual flexibility' keeps
+// for it) is 9 % off at a corner.
+TEST(ReducedModel, KrylovStaticCorrectionFollowsAZoneModulus)
+{
+  Bodies                 setup(overlap_with_a_zone_under_the_contact());
+  const double           E = 210e9;
+  ZoneCorrectionSettings settings;
+  settings.tolerance = 1e-9;
+  const ModalBasis                               no_modes;
+  std::vector<std::shared_ptr<ReducedComponent>> nominal;
+  std::vector<ReducedComponentMatrices>          matrices;
+  for (unsigned int c = 0; c < 2; ++c)
+    {
+      nominal.push_back(std::make_shared<ReducedComponent>(
+        *setup.components[c],
+        no_modes,
+        setup.bodies.stiffness_factorisation(c),
+        setup.interface->contact_dofs(c),
+        true));
+      matrices.push_back(nominal[c]->matrices(setup.interface->gap_operator(c),
+                                              setup.outputs.dofs()[c]));
+    }
+  const ZoneStaticCorrection zone(*setup.components[1],
+                                  {"P2.under.E"},
+                                  {{0.5 * E, 1.5 * E}},
+                                  nominal[1],
+                                  {},
+                                  setup.interface->gap_operator(1),
+                                  setup.outputs.dofs()[1],
+                                  settings);
+  const ZoneCorrectionCheck &check = zone.check();
+  EXPECT_TRUE(check.tolerance_met) << zone.describe();
+  EXPECT_LE(check.flexibility_error, 1e-9);
+  EXPECT_EQ(check.n_corners, 2u);
+  EXPECT_GE(check.n_krylov, 1u);
+  EXPECT_EQ(check.n_static, nominal[1]->n_corrections());
+  // One parameter: a diagonal reduced stiffness, no factorisation.
+  EXPECT_EQ(zone.matrices({E}, matrices[1]).stiffness.m(), 0u);
+  EXPECT_EQ(zone.matrices({E}, matrices[1]).stiffness_diagonal.size(),
+            check.n_active);
+
+  ReducedContactModel model(matrices,
+                            setup.interface->initial_gaps(),
+                            setup.interface->friction_coefficients());
+  // P2 as the Krylov correction's active part (per state) and its inert
+  // part (fixed), against the nominal P2 (the 'residual flexibility').
+  const auto krylov = [&](const double modulus) {
+    model.replace_component(1, zone.matrices({modulus}, matrices[1]));
+    if (zone.size() > check.n_active)
+      model.set_fixed_part(1, zone.fixed_matrices(matrices[1]));
+  };
+  const auto nominal_p2 = [&]() {
+    model.replace_component(1, matrices[1]);
+    model.clear_fixed_part(1);
+  };
+  double nominal_error = 0;
+  for (const double factor : {0.5, 1.5, 0.8, 1.2})
+    {
+      setup.state.zone_moduli[1] = {factor * E, E};
+      setup.bodies.set_materials(setup.state);
+      FullOrderContact         full(setup.components, *setup.interface);
+      const FullMatrix<double> W = full.flexibility();
+
+      // The nominal static correction: W of the unchanged flexibility.
+      nominal_p2();
+      FullMatrix<double> difference = model.flexibility();
+      difference.add(-1., W);
+      nominal_error =
+        std::max(nominal_error,
+                 difference.frobenius_norm() / W.frobenius_norm());
+
+      krylov(factor * E);
+      difference = model.flexibility();
+      difference.add(-1., W);
+      EXPECT_LE(difference.frobenius_norm(), 1e-8 * W.frobenius_norm())
+        << factor;
+      Vector<double> dg = model.problem().g_load;
+      dg -= full.load_gaps();
+      EXPECT_LE(dg.l2_norm(), 1e-8 * full.load_gaps().l2_norm()) << factor;
+      // The component's own measure at this point.
+      EXPECT_LE(zone.error_at({factor * E}).first, 1e-8) << factor;
+
+      // The contact answer, friction and all.
+      const ContactState state =
+        ActiveSetSolver().solve(model.problem(), 1, 1, "krylov");
+      const Answer r(setup, model.solution(state, 1, "krylov"));
+      const Answer f = full_order(setup);
+      EXPECT_NEAR(r.normal_force, f.normal_force, 1e-8 * f.normal_force);
+      EXPECT_LE(relative(r.slave_displacement, f.slave_displacement), 1e-7);
+      for (unsigned int i = 0; i < 2; ++i)
+        EXPECT_LE(relative(r.master_displacements[i],
+                           f.master_displacements[i]),
+                  1e-7);
+    }
+  EXPECT_GT(nominal_error, 0.05);
+}
+
+// Snapshots join the Krylov basis: a field already in its span adds
+// nothing, a new direction one vector, and the check still holds.
+TEST(ReducedModel, KrylovStaticCorrectionTakesSnapshots)
+{
+  Bodies                 setup(overlap_with_a_zone_under_the_contact());
+  ZoneCorrectionSettings settings;
+  settings.max_degree = 1; // few vectors: room for new directions
+  const ModalBasis     no_modes;
+  ZoneStaticCorrection zone(
+    *setup.components[1],
+    {"P2.under.E"},
+    {{0.9 * 210e9, 1.1 * 210e9}},
+    std::make_shared<ReducedComponent>(*setup.components[1],
+                                       no_modes,
+                                       setup.bodies.stiffness_factorisation(1),
+                                       setup.interface->contact_dofs(1),
+                                       true),
+    {},
+    setup.interface->gap_operator(1),
+    setup.outputs.dofs()[1],
+    settings);
+  const unsigned int n = zone.size();
+  // K0^{-1} e at a contact DoF is in the span (level 0).
+  Vector<double> u(setup.components[1]->n_dofs());
+  u[setup.interface->contact_dofs(1)[0]] = 1;
+  setup.bodies.stiffness_factorisation(1)->solve(u);
+  EXPECT_EQ(zone.add_vectors({u}), 0u);
+  // The response to a load at the far clamp's neighbourhood is not.
+  Vector<double> v(setup.components[1]->n_dofs());
+  v[setup.components[1]->vertex_dofs(Point<2>(0.26, -0.008))[1]] = 1;
+  setup.bodies.stiffness_factorisation(1)->solve(v);
+  EXPECT_EQ(zone.add_vectors({v, v}), 1u);
+  EXPECT_EQ(zone.size(), n + 1);
+  EXPECT_EQ(zone.check().n_snapshots, 1u);
+  EXPECT_LE(zone.check().flexibility_error, settings.tolerance);
+}
+
+// The proofs' exact solves of a changed zone modulus by conjugate
+// gradients on the nominal factorisation: against a new factorisation
+// (K^{-1} b to 1e-10; the contact answers of FullOrderModel to 1e-10 of
+// F_n and of the slave's displacement), with no factorisation made, a few
+// steps per solve, and a solve that does not converge names its keys.
+TEST(FullOrderModel, ConjugateGradientsAgreeWithARefactorisedSolve)
+{
+  Bodies           setup(overlap_with_a_zone_under_the_contact());
+  const double     E         = 210e9;
+  const Component &component = *setup.components[1];
+  const auto       nominal   = setup.bodies.stiffness_factorisation(1);
+
+  setup.state.zone_moduli[1] = {0.5 * E, E};
+  setup.bodies.set_materials(setup.state);
+  SparseCholesky direct;
+  direct.factorize(component.stiffness_matrix());
+  auto statistics = std::make_shared<IterativeSolveStatistics>();
+  const FactorPreconditionedCG cg(component.stiffness_matrix(),
+                                  nominal,
+                                  1e-12,
+                                  100,
+                                  "the test's keys",
+                                  "P2",
+                                  statistics);
+  Vector<double>               b(component.n_dofs());
+  for (const auto dof : setup.interface->contact_dofs(1))
+    b[dof] = 1;
+  Vector<double> x = b, y = b;
+  direct.solve(x);
+  cg.solve(y);
+  y -= x;
+  EXPECT_LE(y.l2_norm(), 1e-10 * x.l2_norm());
+  EXPECT_EQ(statistics->solves, 1u);
+  EXPECT_LE(statistics->iterations, 40u); // condition number at most 2
+  const FactorPreconditionedCG one_step(component.stiffness_matrix(),
+                                        nominal,
+                                        1e-12,
+                                        1,
+                                        "the test's keys",
+                                        "P2");
+  const std::string            message = error_of([&]() {
+    Vector<double> z = b;
+    one_step.solve(z);
+  });
+  EXPECT_NE(message.find("max_iterations = 1"), std::string::npos) << message;
+  EXPECT_NE(message.find("the test's keys"), std::string::npos) << message;
+
+  // FullOrderModel: reused factorisations and CG against independent
+  // analyses, at both ends of the range and back at the nominal point.
+  FullOrderModel iterative(setup.bodies, setup.outputs.dofs());
+  iterative.set_reuse_factorisations(true);
+  iterative.set_iterative_solves(FullOrderModel::ChangedStiffness::cg,
+                                 1e-12,
+                                 100,
+                                 "keys");
+  iterative.set_state(SceneState(setup.scene)); // (the nominal factors)
+  iterative.solve();
+  for (const double factor : {0.5, 1.5, 1.0})
+    {
+      setup.state.zone_moduli[1] = {factor * E, E};
+      iterative.set_state(setup.state);
+      const unsigned int before = setup.bodies.n_factorisations(1);
+      const Answer       a(setup, iterative.solve());
+      EXPECT_EQ(setup.bodies.n_factorisations(1), before) << factor;
+      const Answer f = full_order(setup);
+      EXPECT_NEAR(a.normal_force, f.normal_force, 1e-10 * f.normal_force);
+      EXPECT_LE(relative(a.slave_displacement, f.slave_displacement), 1e-10);
+      // and with the displacement fields (the snapshots of the proofs)
+      const ContactSolution s = iterative.solve_with_fields();
+      ASSERT_EQ(s.displacements.size(), 2u);
+      EXPECT_NEAR(s.normal_force, f.normal_force, 1e-10 * f.normal_force);
+    }
+  EXPECT_GT(iterative.iterative_statistics().solves, 0u);
 }
 
 // Displacements recovered at the observed DoFs (from precomputed

@@ -9,6 +9,9 @@
 //
 //   refused    exit status 1, one clear message on stderr, nothing written
 //   accepted   exit status 0, the results written, no NaN/inf in them
+//   unproven   step-4's exit status 3: the results written (no NaN/inf),
+//              some bounds not proven within the proofs' tolerance, said
+//              on stderr (doc/fuzzy-study.md)
 //   crash      killed by a signal, another exit status, or exit 0 without
 //              results
 //   hang       still running at the time limit
@@ -649,6 +652,16 @@ namespace
               return {"garbage", std::string("NaN/inf in ") + name};
         return {"accepted", ""};
       }
+    if (code == 3 && run.program == "step-4" && wrote &&
+        err.find("not proven within") != std::string::npos)
+      {
+        for (const char *name : {"results.json", "report.txt"})
+          if (fs::exists(output / name) &&
+              has_non_finite(read_file(output / name),
+                             std::string(name) == "results.json"))
+            return {"garbage", std::string("NaN/inf in ") + name};
+        return {"unproven", ""};
+      }
     if (code != 1)
       return {"crash", "exit status " + std::to_string(code)};
     if (!output.empty() && !run.output_existed && fs::exists(output))
@@ -776,8 +789,13 @@ main(int argc, char **argv)
     log.open(options.log);
 
   std::map<std::string, unsigned int> counts;
-  for (const char *c :
-       {"refused", "accepted", "crash", "hang", "garbage", "unclear"})
+  for (const char *c : {"refused",
+                        "accepted",
+                        "unproven",
+                        "crash",
+                        "hang",
+                        "garbage",
+                        "unclear"})
     counts[c] = 0;
   std::vector<Run> running;
   std::size_t      next   = 0;
@@ -806,7 +824,8 @@ main(int argc, char **argv)
     std::cout << line.str() << std::endl;
     if (log.is_open())
       log << line.str() << std::endl;
-    const bool      failure = kind != "refused" && kind != "accepted";
+    const bool failure =
+      kind != "refused" && kind != "accepted" && kind != "unproven";
     std::error_code ignore;
     if (failure)
       {

@@ -21,6 +21,32 @@ fuzzycontact_program_test(step-4.quick_run step-4 overlap
   -DEXPECT=success
   -DJSON_CHECKS=${CMAKE_CURRENT_SOURCE_DIR}/check_step-4.cmake)
 
+# The proofs feed back: a deliberately poor model (modes only, three of
+# them) is made richer by the exact solutions at the unproven bounds'
+# arguments until every bound is proven (exit 0); with no rounds allowed
+# the run writes its results, warns per unproven bound, flags them in
+# results.json and exits with status 3.
+set(step4_poor_model
+  "-DEDIT4_FILE=step"
+  "-DEDIT4_FROM=set static correction = true"
+  "-DEDIT4_TO=set static correction = false"
+  "-DEDIT5_FILE=step"
+  "-DEDIT5_FROM=set number of modes  = 9"
+  "-DEDIT5_TO=set number of modes  = 3")
+fuzzycontact_program_test(step-4.proofs_correct_a_poor_model step-4 overlap
+  ${step4_quick} ${step4_poor_model}
+  -DEXPECT=success
+  -DJSON_CHECKS=${CMAKE_CURRENT_SOURCE_DIR}/check_step-4_corrected.cmake)
+fuzzycontact_program_test(step-4.unproven_bounds_exit_status step-4 overlap
+  ${step4_quick} ${step4_poor_model}
+  "-DEDIT6_FILE=step"
+  "-DEDIT6_FROM=set max rounds        = 3"
+  "-DEDIT6_TO=set max rounds        = 0"
+  -DEXPECT=success
+  -DEXPECT_STATUS=3
+  "-DMESSAGE=bound\\(s\\) not proven within 0.0001"
+  -DJSON_CHECKS=${CMAKE_CURRENT_SOURCE_DIR}/check_step-4_unproven.cmake)
+
 # step4_study_test(<name> <study prm> <scene prm> <output folder> <check
 # script> [run_program.cmake arguments...]): step-4 on prm/<study prm> in a
 # folder of its own, with the edits and extra files given, and its

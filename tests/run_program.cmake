@@ -7,6 +7,7 @@
 #         [-DEXTRA_FILES=<file>,<file>...]
 #         [-DLAUNCHER=<command>|<arg>|...]   (e.g. /usr/bin/mpiexec|-n|2)
 #         -DEXPECT=success|failure [-DMESSAGE=<regex>]
+#         [-DEXPECT_STATUS=<n>]  (success with this exit status, e.g. 3)
 #         [-DJSON_CHECKS=<check script>]
 #         -P run_program.cmake
 #
@@ -17,7 +18,8 @@
 # LAUNCHER if given. For
 # EXPECT=failure the program must exit non-zero, print a message matching
 # MESSAGE on stderr and leave no output folder (EXPECT=success: MESSAGE, if
-# given, must match its standard output). For
+# given, must match its standard output; with EXPECT_STATUS, the exit
+# status must be that one, and MESSAGE must match stderr instead). For
 # EXPECT=success it must exit 0 and write OUTPUT/results.json; JSON_CHECKS
 # then names a CMake script that inspects the variable RESULTS_JSON (and may
 # look at the other files in WORKDIR/OUTPUT).
@@ -76,8 +78,12 @@ if(EXPECT STREQUAL "failure")
   endif()
   message(STATUS "refused as expected (status ${status}): ${err}")
 else()
-  if(NOT status EQUAL 0)
-    message(FATAL_ERROR "exit status ${status}\n${out}\n${err}")
+  set(expected_status 0)
+  if(DEFINED EXPECT_STATUS)
+    set(expected_status ${EXPECT_STATUS})
+  endif()
+  if(NOT status EQUAL expected_status)
+    message(FATAL_ERROR "exit status ${status}, expected ${expected_status}\n${out}\n${err}")
   endif()
   if(NOT EXISTS "${WORKDIR}/${OUTPUT}/results.json")
     message(FATAL_ERROR "no ${OUTPUT}/results.json was written")
@@ -90,7 +96,11 @@ else()
   if(DEFINED JSON_CHECKS)
     include("${JSON_CHECKS}")
   endif()
-  if(DEFINED MESSAGE AND NOT out MATCHES "${MESSAGE}")
+  if(DEFINED EXPECT_STATUS)
+    if(DEFINED MESSAGE AND NOT err MATCHES "${MESSAGE}")
+      message(FATAL_ERROR "stderr does not match <${MESSAGE}>:\n${err}")
+    endif()
+  elseif(DEFINED MESSAGE AND NOT out MATCHES "${MESSAGE}")
     message(FATAL_ERROR "stdout does not match <${MESSAGE}>:\n${out}")
   endif()
   message(STATUS "${out}")

@@ -108,7 +108,7 @@ namespace FuzzyContact
       std::vector<Index>        column_starts;
       std::vector<unsigned int> rows;
       std::vector<Index>        last; // member[] of the DoFs ordered last
-      double                    lnz      = 0;
+      double                    lnz = 0, fl = 0;
       cholmod_factor           *symbolic = nullptr;
       cholmod_common            common;
 
@@ -188,6 +188,7 @@ namespace FuzzyContact
                                    "CHOLMOD failed with status " +
                                    std::to_string(common.status) + "."));
             common.lnz = (*it)->lnz;
+            common.fl  = (*it)->fl;
             analyses.splice(analyses.begin(), analyses, it);
             ++n_shared;
             break;
@@ -227,6 +228,7 @@ namespace FuzzyContact
         analysis->rows.assign(lower.rows.begin(), lower.rows.end());
         analysis->last = member;
         analysis->lnz  = common.lnz;
+        analysis->fl   = common.fl;
         analysis->symbolic =
           cholmod_l_copy_factor(data->factor, &analysis->common);
         if (analysis->symbolic != nullptr)
@@ -456,7 +458,7 @@ namespace FuzzyContact
                         L.is_monotonic,
                         static_cast<Index>(F->data->common.lnz),
                         static_cast<Index>(F->trailing.size()),
-                        0};
+                        static_cast<Index>(F->data->common.fl)};
         }
     std::vector<MPI_Request> requests;
     for (std::size_t f = 0; f < n_f; ++f)
@@ -522,6 +524,7 @@ namespace FuzzyContact
             L->xtype        = CHOLMOD_REAL;
             L->dtype        = CHOLMOD_DOUBLE;
             common.lnz      = h[9];
+            common.fl       = h[11];
             result[f]       = copy;
           }
         const unsigned int r = roots[f];
@@ -568,6 +571,13 @@ namespace FuzzyContact
   SparseCholesky::n_factor_entries() const
   {
     return data->factor == nullptr ? 0. : data->common.lnz;
+  }
+
+
+  double
+  SparseCholesky::n_factor_flops() const
+  {
+    return data->factor == nullptr ? 0. : data->common.fl;
   }
 
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <numeric>
 
 namespace FuzzyContact
 {
@@ -122,7 +123,7 @@ namespace FuzzyContact
     reserve(m + 1);
     // The new row of L: l = L^{-1} W_Br, stored in row m.
     const double  *column = W.column(r);
-    Vector<double> l(m);
+    std::vector<double> l(m);
     for (unsigned int i = 0; i < m; ++i)
       l[i] = column[rows_[i]];
     if (m > 0)
@@ -133,7 +134,8 @@ namespace FuzzyContact
         Assert(info == 0, ExcInternalError());
       }
     const double w_rr  = column[r];
-    const double pivot = w_rr - (l * l);
+    const double pivot =
+      w_rr - std::inner_product(l.begin(), l.end(), l.begin(), 0.);
     if (!(pivot > dependence * w_rr))
       return false;
     for (unsigned int j = 0; j < m; ++j)

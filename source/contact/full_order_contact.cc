@@ -147,7 +147,7 @@ namespace FuzzyContact
 
   void
   FullOrderContact::set_factorisation_source(
-    std::function<std::shared_ptr<const SparseCholesky>(unsigned int)> source)
+    std::function<std::shared_ptr<const StiffnessSolver>(unsigned int)> source)
   {
     factorisation_source = std::move(source);
   }

@@ -179,7 +179,12 @@ namespace FuzzyContact
           out << "  proofs, full order at the bounds      " << std::setw(8)
               << proofs << " s  " << r.proofs.n_evaluations
               << " evaluations (the distinct arguments of "
-              << 2 * r.outputs.size() * r.alpha.size() << " bounds)\n";
+              << 2 * r.outputs.size() * r.alpha.size() << " bounds"
+              << (r.proof_rounds.size() > 1
+                    ? ", over " + std::to_string(r.proof_rounds.size()) +
+                        " rounds, with making the model richer"
+                    : std::string())
+              << ")\n";
           json["time_s"]["proofs"]      = proofs;
           json["evaluations"]["proofs"] = r.proofs.n_evaluations;
         }
@@ -325,6 +330,7 @@ namespace FuzzyContact
         }
       json["notes"] = r.optimisation.notes;
       report.say(notes.str());
+      FuzzyStudyReport::proof_summary(r, report, json);
       cost(r, report, json);
     }
 

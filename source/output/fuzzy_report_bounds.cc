@@ -177,10 +177,17 @@ namespace FuzzyContact
                 {
                   const BoundProof &p =
                     upper ? r.proofs.upper[k][l] : r.proofs.lower[k][l];
-                  out << std::setw(10) << sci(p.difference()) << "        ";
+                  // (!): beyond the proofs' tolerance, see the warnings.
+                  bool proven = true;
+                  for (const UnprovenBound &u : r.unproven)
+                    if (u.output == k && u.level == l && u.upper == upper)
+                      proven = false;
+                  out << std::setw(10) << sci(p.difference())
+                      << (proven ? "        " : " (!)    ");
                   proof[side + "_reduced"].push_back(value(p.reduced));
                   proof[side + "_exact"].push_back(value(p.exact));
                   proof[side + "_difference"].push_back(value(p.difference()));
+                  proof[side + "_proven"].push_back(proven);
                 }
               else
                 out << "       ";
@@ -317,6 +324,130 @@ namespace FuzzyContact
                                        {"outside_not_verified", unverified},
                                        {"n_outside_not_verified",
                                         n_unverified}};
+    }
+
+
+    std::string
+    enrichment(const unsigned int round,
+               const std::size_t  n_points,
+               const unsigned int added,
+               const double       tolerance)
+    {
+      std::ostringstream out;
+      out << "proofs, round " << round << ": bounds beyond " << sci(tolerance)
+          << " of their output's range; the model is made richer with the "
+             "exact solutions at their "
+          << n_points << " distinct argument(s): " << added
+          << " vector(s) added"
+          << (added > 0 ? ", the bounds are searched again"
+                        : ", nothing new (the rounds stop)")
+          << "\n";
+      return out.str();
+    }
+
+
+    void
+    proof_summary(const FuzzyStudyResults &r,
+                  Report                  &report,
+                  nlohmann::json          &json)
+    {
+      if (!r.has_proofs)
+        return;
+      const ProofSettings &ps = r.proof_settings;
+      std::ostringstream   out;
+      out << "\nproofs: a bound is proven when |reduced - exact| at its "
+             "argument is at most "
+          << sci(ps.tolerance) << " of its output's range ("
+          << r.proof_rounds.size() << " round(s) of search and proofs; "
+          << r.proof_stop << ")\n";
+      nlohmann::json rounds = nlohmann::json::array();
+      for (unsigned int i = 0; i < r.proof_rounds.size(); ++i)
+        {
+          const ProofRound &p = r.proof_rounds[i];
+          out << "  round " << i << ": " << p.evaluations
+              << " reduced evaluations, " << p.proofs << " exact solves, "
+              << p.n_unproven << " bound(s) beyond the tolerance";
+          if (p.n_unproven > 0)
+            out << " (largest " << sci(p.largest, 2) << " of the range)";
+          if (p.added > 0)
+            out << "; " << p.added << " vector(s) added to the model";
+          out << "\n";
+          rounds.push_back({{"evaluations", p.evaluations},
+                            {"exact_solves", p.proofs},
+                            {"n_unproven", p.n_unproven},
+                            {"largest_relative_error", p.largest},
+                            {"vectors_added", p.added},
+                            {"search_time_s", p.search_time},
+                            {"proof_time_s", p.proof_time},
+                            {"enrichment_time_s", p.enrichment_time}});
+        }
+      if (r.proof_cg.by_cg + r.proof_cg.factorised > 0)
+        {
+          out << "  changed stiffnesses (Proofs: solver = "
+              << (ps.solver == ProofSettings::Solver::cg ? "cg" : "automatic")
+              << "): " << r.proof_cg.by_cg
+              << " solved by conjugate gradients on the nominal "
+                 "factorisations, "
+              << r.proof_cg.factorised << " factorised";
+          if (r.proof_cg.solves > 0)
+            out << "; " << r.proof_cg.solves << " CG solves, "
+                << sci(double(r.proof_cg.iterations) / r.proof_cg.solves, 2)
+                << " steps each on average (at most "
+                << r.proof_cg.max_iterations << "), relative residual "
+                << sci(ps.cg_tolerance);
+          out << "\n";
+        }
+      if (!r.model_after.empty())
+        out << "  the model after the last round:\n" << r.model_after;
+      report.say(out.str());
+
+      // One warning line per unproven bound.
+      nlohmann::json     unproven = nlohmann::json::array();
+      std::ostringstream warnings;
+      for (const UnprovenBound &u : r.unproven)
+        {
+          const std::string name = r.outputs[u.output].name;
+          warnings << "warning: the " << (u.upper ? "upper" : "lower")
+                   << " bound of " << name << " at alpha = " << std::fixed
+                   << std::setprecision(2) << r.alpha[u.level]
+                   << " is not proven: reduced - exact = "
+                   << sci(u.difference, 2) << " at its argument, "
+                   << sci(u.relative, 2) << " of the output's range (tolerance "
+                   << sci(ps.tolerance) << ")\n";
+          unproven.push_back({{"output", name},
+                              {"alpha", r.alpha[u.level]},
+                              {"side", u.upper ? "upper" : "lower"},
+                              {"difference", u.difference},
+                              {"relative_error", u.relative},
+                              {"argument", u.argument}});
+        }
+      if (!r.unproven.empty())
+        warnings << "warning: " << r.unproven.size()
+                 << " bound(s) are not proven within the tolerance after "
+                 << r.proof_rounds.size() << " round(s); "
+                 << (ps.accept_unproven
+                       ? "accepted ('accept unproven = true'): exit status 0"
+                       : "step-4 exits with status 3 ('accept unproven' of "
+                         "subsection Proofs accepts them)")
+                 << "\n";
+      report.say(warnings.str());
+      json["proofs"] = {{"tolerance", ps.tolerance},
+                        {"max_rounds", ps.max_rounds},
+                        {"rounds", rounds},
+                        {"stopped", r.proof_stop},
+                        {"all_proven", r.unproven.empty()},
+                        {"accepted", ps.accept_unproven},
+                        {"unproven", unproven},
+                        {"solver",
+                         ps.solver == ProofSettings::Solver::cg ? "cg"
+                         : ps.solver == ProofSettings::Solver::factorisation
+                           ? "factorisation"
+                           : "automatic"},
+                        {"stiffnesses_by_cg", r.proof_cg.by_cg},
+                        {"stiffnesses_factorised", r.proof_cg.factorised},
+                        {"cg_solves", r.proof_cg.solves},
+                        {"cg_iterations", r.proof_cg.iterations},
+                        {"cg_tolerance", ps.cg_tolerance}};
     }
 
 

@@ -133,6 +133,7 @@ namespace FuzzyContact
       : component(component)
       , modes(modes)
       , factorisation(std::move(factorisation_))
+      , nominal_moduli(component.zone_moduli())
   {
     const unsigned int          n_m = modes.size();
     const SparseMatrix<double> &K   = component.stiffness_matrix();
@@ -304,9 +305,78 @@ namespace FuzzyContact
   }
 
   unsigned int
+  ReducedComponent::n_added() const
+  {
+    return added.size();
+  }
+
+  unsigned int
   ReducedComponent::size() const
   {
-    return n_modes() + n_corrections();
+    return n_modes() + n_corrections() + n_added();
+  }
+
+
+  unsigned int
+  ReducedComponent::add_vectors(const std::vector<Vector<double>> &u)
+  {
+    const unsigned int n = component.n_dofs();
+    // K x at the nominal moduli.
+    const auto stiffness_times = [&](const Vector<double> &x) {
+      Vector<double> Kx(n), y(n);
+      for (unsigned int z = 0; z < component.n_zones(); ++z)
+        {
+          component.zone_stiffness_matrix(z).vmult(y, x);
+          Kx.add(nominal_moduli[z], y);
+        }
+      return Kx;
+    };
+    unsigned int n_new = 0;
+    for (const Vector<double> &v : u)
+      {
+        AssertDimension(v.size(), n);
+        const double own = std::sqrt(std::max(0., v * stiffness_times(v)));
+        if (!(own > 0) || !std::isfinite(own))
+          continue;
+        Vector<double> w = v;
+        for (unsigned int pass = 0; pass < 2; ++pass)
+          {
+            // c = K_r^{-1} V^T K w (K_r = diag(Lambda, I, I)), w -= V c.
+            Vector<double> c = stiffness_products(w);
+            if (n_modes() > 0)
+              {
+                FullMatrix<double> lambda_inverse(n_modes(), n_modes());
+                lambda_inverse.invert(lambda);
+                Vector<double> a(n_modes()), b(n_modes());
+                for (unsigned int j = 0; j < n_modes(); ++j)
+                  b[j] = c[j];
+                lambda_inverse.vmult(a, b);
+                for (unsigned int j = 0; j < n_modes(); ++j)
+                  c[j] = a[j];
+              }
+            Vector<double> Vc;
+            expand(c, Vc);
+            w -= Vc;
+          }
+        const double rest = std::sqrt(std::max(0., w * stiffness_times(w)));
+        if (!(rest > 1e-10 * own))
+          continue;
+        w /= rest;
+        added.push_back(std::move(w));
+        ++n_new;
+      }
+    // K_r = diag(Lambda, I, I).
+    if (n_new > 0)
+      {
+        const FullMatrix<double> old = K_r;
+        K_r.reinit(size(), size());
+        for (unsigned int i = 0; i < old.m(); ++i)
+          for (unsigned int j = 0; j < old.n(); ++j)
+            K_r(i, j) = old(i, j);
+        for (unsigned int i = old.m(); i < size(); ++i)
+          K_r(i, i) = 1;
+      }
+    return n_new;
   }
 
   bool
@@ -319,6 +389,69 @@ namespace FuzzyContact
   ReducedComponent::stiffness() const
   {
     return K_r;
+  }
+
+
+  const std::shared_ptr<const SparseCholesky> &
+  ReducedComponent::stiffness_factorisation() const
+  {
+    return factorisation;
+  }
+
+
+  Vector<double>
+  ReducedComponent::stiffness_products(const Vector<double> &x) const
+  {
+    const unsigned int n = component.n_dofs();
+    AssertDimension(x.size(), n);
+    const unsigned int n_m = n_modes(), n_s = n_corrections();
+    Vector<double>     c(size()), phi_Kx(n_m);
+    if (n_m > 0 || !added.empty())
+      {
+        // K x at the nominal moduli.
+        Vector<double> Kx(n), y(n);
+        for (unsigned int z = 0; z < component.n_zones(); ++z)
+          {
+            component.zone_stiffness_matrix(z).vmult(y, x);
+            Kx.add(nominal_moduli[z], y);
+          }
+        for (unsigned int j = 0; j < n_m; ++j)
+          c[j] = phi_Kx[j] = modes.modes[j] * Kx;
+        for (unsigned int j = 0; j < added.size(); ++j)
+          c[n_m + n_s + j] = added[j] * Kx;
+      }
+    if (n_s > 0)
+      {
+        // Psi^T K x = X^T (E^T x - R^T Phi^T K x).
+        Vector<double> r = attachment_loads(x), s(n_s);
+        if (n_m > 0)
+          {
+            Vector<double> Rt(r.size());
+            R.Tvmult(Rt, phi_Kx);
+            r -= Rt;
+          }
+        X.Tvmult(s, r);
+        for (unsigned int j = 0; j < n_s; ++j)
+          c[n_m + j] = s[j];
+      }
+    return c;
+  }
+
+
+  FullMatrix<double>
+  ReducedComponent::correction_loads() const
+  {
+    FullMatrix<double> F(E_B.m(), X.n());
+    if (X.n() > 0)
+      E_B.mmult(F, X);
+    return F;
+  }
+
+
+  const std::vector<types::global_dof_index> &
+  ReducedComponent::boundary_dofs() const
+  {
+    return boundary;
   }
 
 
@@ -356,17 +489,21 @@ namespace FuzzyContact
   {
     AssertDimension(f.size(), component.n_dofs());
     const unsigned int n_m = n_modes(), n_s = n_corrections();
-    Vector<double>     q(n_m + n_s);
+    Vector<double>     q(size());
     bool               on_boundary = true;
     for (unsigned int d = 0; d < f.size() && on_boundary; ++d)
       on_boundary = f[d] == 0 || position[d] >= 0;
+    for (unsigned int j = 0; j < added.size(); ++j)
+      q[n_m + n_s + j] = added[j] * f;
     if (on_boundary)
       {
         // V^T f = V_B^T f_B.
-        Vector<double> f_B(boundary.size());
+        Vector<double> f_B(boundary.size()), q_B(n_m + n_s);
         for (unsigned int i = 0; i < boundary.size(); ++i)
           f_B[i] = f[boundary[i]];
-        V_B.Tvmult(q, f_B);
+        V_B.Tvmult(q_B, f_B);
+        for (unsigned int j = 0; j < n_m + n_s; ++j)
+          q[j] = q_B[j];
         return q;
       }
     Vector<double> phi_f(n_m);
@@ -390,10 +527,12 @@ namespace FuzzyContact
   ReducedComponent::rows(const std::vector<types::global_dof_index> &dofs) const
   {
     const unsigned int n_m = n_modes(), n_s = n_corrections();
-    FullMatrix<double> V(dofs.size(), n_m + n_s);
+    FullMatrix<double> V(dofs.size(), size());
     for (unsigned int r = 0; r < dofs.size(); ++r)
       {
         AssertIndexRange(dofs[r], component.n_dofs());
+        for (unsigned int j = 0; j < added.size(); ++j)
+          V(r, n_m + n_s + j) = added[j][dofs[r]];
         if (position[dofs[r]] >= 0)
           {
             for (unsigned int j = 0; j < n_m + n_s; ++j)
@@ -447,7 +586,7 @@ namespace FuzzyContact
   ReducedComponent::expand(const Vector<double> &q, Vector<double> &u) const
   {
     const unsigned int n_m = n_modes(), n_s = n_corrections();
-    AssertDimension(q.size(), n_m + n_s);
+    AssertDimension(q.size(), size());
     u.reinit(component.n_dofs());
     Vector<double> qm(n_m);
     for (unsigned int j = 0; j < n_m; ++j)
@@ -472,6 +611,8 @@ namespace FuzzyContact
       }
     for (unsigned int j = 0; j < n_m; ++j)
       u.add(qm[j], modes.modes[j]);
+    for (unsigned int j = 0; j < added.size(); ++j)
+      u.add(q[n_m + n_s + j], added[j]);
   }
 
 

@@ -97,17 +97,13 @@ namespace FuzzyContact
           w[i] += a * row[i];
         return;
       }
-    // W_c(i, j) = U(i, :) . U(j, :)
-    const unsigned int k   = U.n();
-    const double      *u_j = &U(j, 0);
-    for (unsigned int i = 0; i < m; ++i)
-      {
-        const double *u_i = &U(i, 0);
-        double        d   = 0;
-        for (unsigned int l = 0; l < k; ++l)
-          d += u_i[l] * u_j[l];
-        w[i] += a * d;
-      }
+    // W_c(:, j) = U U(j, :)^T, one matrix-vector product (BLAS): U's
+    // row-major data is the column-major U^T (k x m).
+    const types::blas_int k = U.n(), rows = m, one = 1;
+    if (k == 0 || m == 0)
+      return;
+    const double beta = 1;
+    gemv("T", &k, &rows, &a, &U(0, 0), &k, &U(j, 0), &one, &beta, w, &one);
   }
 
 
@@ -134,8 +130,56 @@ namespace FuzzyContact
     void
     prepare(const std::vector<unsigned int> &columns) override
     {
+      // Many new columns of parts of low rank are combined at once,
+      // W(:, J) = U U(J, :)^T as one matrix product (BLAS), not column by
+      // column.
+      std::vector<unsigned int> missing;
       for (const unsigned int j : columns)
-        column(j);
+        if (!computed[j] &&
+            std::find(missing.begin(), missing.end(), j) == missing.end())
+          missing.push_back(j);
+      if (missing.size() < 8)
+        {
+          for (const unsigned int j : missing)
+            column(j);
+          return;
+        }
+      for (const unsigned int j : missing)
+        {
+          AssertIndexRange(j, m);
+          std::fill(&cache(j, 0), &cache(j, 0) + m, 0.);
+        }
+      for (unsigned int c = 0; c < model.variable.size(); ++c)
+        for (const Part *part : {&model.variable[c], &model.fixed[c]})
+          if (part->present)
+            {
+              const double a = 1. / model.scales[c];
+              if (!part->low_rank || part->U.n() == 0)
+                {
+                  for (const unsigned int j : missing)
+                    part->add_column(j, a, &cache(j, 0));
+                  continue;
+                }
+              FullMatrix<double> UJ(missing.size(), part->U.n()),
+                Z(missing.size(), m);
+              for (unsigned int r = 0; r < missing.size(); ++r)
+                std::copy(&part->U(missing[r], 0),
+                          &part->U(missing[r], 0) + part->U.n(),
+                          &UJ(r, 0));
+              UJ.mTmult(Z, part->U);
+              for (unsigned int r = 0; r < missing.size(); ++r)
+                {
+                  double       *w = &cache(missing[r], 0);
+                  const double *z = &Z(r, 0);
+                  for (unsigned int i = 0; i < m; ++i)
+                    w[i] += a * z[i];
+                }
+            }
+      for (const unsigned int j : missing)
+        {
+          computed[j] = true;
+          list.push_back(j);
+        }
     }
 
     double
@@ -300,11 +344,13 @@ namespace FuzzyContact
 
 
   void
-  ReducedContactModel::compute_blocks(Part &part) const
+  ReducedContactModel::compute_blocks(Part &part, const bool dense) const
   {
-    const unsigned int              m = problem_.g_initial.size();
-    const ReducedComponentMatrices &r = part.matrices;
-    const unsigned int              k = r.stiffness.m();
+    const unsigned int              m        = problem_.g_initial.size();
+    const ReducedComponentMatrices &r        = part.matrices;
+    const bool                      diagonal = r.stiffness_diagonal.size() > 0;
+    const unsigned int              k =
+      diagonal ? r.stiffness_diagonal.size() : r.stiffness.m();
     bool loads_fit = r.loads.size() == r.reference_forces.size() &&
                      r.loads.size() == r.stiffness_proportional.size();
     for (const Vector<double> &f : r.loads)
@@ -318,19 +364,52 @@ namespace FuzzyContact
       loads_fit = loads_fit && g.size() == m;
     for (const Vector<double> &u : r.weight_observation)
       loads_fit = loads_fit && u.size() == r.observed_dofs.size();
-    AssertThrow(r.stiffness.n() == k && r.gap_operator.m() == m &&
-                  r.gap_operator.n() == k && loads_fit &&
-                  r.observation.m() == r.observed_dofs.size() &&
+    AssertThrow((diagonal ? r.stiffness.m() == 0 : r.stiffness.n() == k) &&
+                  r.gap_operator.m() == m && r.gap_operator.n() == k &&
+                  loads_fit && r.observation.m() == r.observed_dofs.size() &&
                   (r.observed_dofs.empty() || r.observation.n() == k),
                 ExcMessage("ReducedContactModel: the reduced matrices of a "
                            "component do not fit together."));
-    part.factor = cholesky(r.stiffness);
+    if (diagonal)
+      {
+        // L = diag(sqrt(d)): no factorisation, and every solve a scaling.
+        part.factor.reinit(0, 0);
+        part.root_diagonal.reinit(k);
+        for (unsigned int i = 0; i < k; ++i)
+          {
+            AssertThrow(r.stiffness_diagonal[i] > 0 &&
+                          std::isfinite(r.stiffness_diagonal[i]),
+                        ExcMessage("ReducedContactModel: the reduced "
+                                   "stiffness of a component is not positive "
+                                   "definite (a diagonal entry " +
+                                   std::to_string(r.stiffness_diagonal[i]) +
+                                   ")."));
+            part.root_diagonal[i] = std::sqrt(r.stiffness_diagonal[i]);
+          }
+      }
+    else
+      {
+        part.root_diagonal.reinit(0);
+        part.factor = cholesky(r.stiffness);
+      }
+    // A := A L^{-T} (rows of A scaled, for a diagonal L).
+    const auto right_solve_part = [&](FullMatrix<double> &A) {
+      if (!diagonal)
+        right_solve(part.factor, A);
+      else
+        for (unsigned int i = 0; i < A.m(); ++i)
+          for (unsigned int l = 0; l < k; ++l)
+            A(i, l) /= part.root_diagonal[l];
+    };
 
     // U = C_r L^{-T}: W_c = C_r K_r^{-1} C_r^T = U U^T.
     FullMatrix<double> U = r.gap_operator;
-    right_solve(part.factor, U);
+    right_solve_part(U);
     check_finite(U);
-    part.low_rank = 2 * k < m;
+    // (A diagonal K_r is a part that changes with every state: its columns
+    // are combined when a solver asks for them, never the whole W_c; a
+    // fixed part is formed once, dense, so that its columns cost O(m).)
+    part.low_rank = !dense && (2 * k < m || diagonal);
     part.diagonal.reinit(m);
     for (unsigned int i = 0; i < m; ++i)
       for (unsigned int l = 0; l < k; ++l)
@@ -356,7 +435,7 @@ namespace FuzzyContact
     // O K_r^{-1} C_r^T = (O L^{-T}) U^T.
     const unsigned int n_obs = r.observed_dofs.size();
     FullMatrix<double> O_L   = r.observation;
-    right_solve(part.factor, O_L);
+    right_solve_part(O_L);
     part.observation_flexibility.reinit(n_obs, m);
     if (n_obs > 0 && k > 0)
       O_L.mTmult(part.observation_flexibility, U);
@@ -366,7 +445,11 @@ namespace FuzzyContact
       {
         // h = L^{-1} f: g = C_r K_r^{-1} f = U h, u = O L^{-T} h.
         Vector<double> h = f;
-        solve(part.factor, h, false);
+        if (diagonal)
+          for (unsigned int l = 0; l < k; ++l)
+            h[l] /= part.root_diagonal[l];
+        else
+          solve(part.factor, h, false);
         Vector<double> g(m), u(n_obs);
         U.vmult(g, h);
         if (n_obs > 0)
@@ -424,6 +507,36 @@ namespace FuzzyContact
 
 
   void
+  ReducedContactModel::replace_component(const unsigned int       c,
+                                         ReducedComponentMatrices matrices,
+                                         const unsigned int       owner,
+                                         const MPI_Comm           comm)
+  {
+    AssertIndexRange(c, variable.size());
+    const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+    if (rank == owner)
+      {
+        variable[c].matrices = std::move(matrices);
+        compute_blocks(variable[c]);
+      }
+    Part received = Utilities::MPI::broadcast(comm, variable[c], owner);
+    if (rank != owner)
+      variable[c] = std::move(received);
+    scales[c] = 1.;
+    flexibility_changed();
+  }
+
+
+  void
+  ReducedContactModel::clear_fixed_part(const unsigned int c)
+  {
+    AssertIndexRange(c, fixed.size());
+    fixed[c] = Part();
+    flexibility_changed();
+  }
+
+
+  void
   ReducedContactModel::set_fixed_part(const unsigned int       c,
                                       ReducedComponentMatrices matrices)
   {
@@ -432,7 +545,7 @@ namespace FuzzyContact
                 ExcMessage("ReducedContactModel: the fixed part of a "
                            "component must observe the same DoFs."));
     fixed[c].matrices = std::move(matrices);
-    compute_blocks(fixed[c]);
+    compute_blocks(fixed[c], true);
     flexibility_changed();
   }
 
@@ -504,13 +617,19 @@ namespace FuzzyContact
         for (const Part *part : {&variable[c], &fixed[c]})
           if (part->present)
             {
-              Vector<double> rhs(part->matrices.stiffness.m());
+              Vector<double> rhs(part->matrices.gap_operator.n());
               for (unsigned int l = 0; l < part->matrices.loads.size(); ++l)
                 rhs.add(load_factor * this->load_factor(c, l),
                         part->matrices.loads[l]);
               part->matrices.gap_operator.Tvmult_add(rhs, p);
-              solve(part->factor, rhs, false);
-              solve(part->factor, rhs, true);
+              if (part->root_diagonal.size() > 0)
+                for (unsigned int l = 0; l < rhs.size(); ++l)
+                  rhs[l] /= part->root_diagonal[l] * part->root_diagonal[l];
+              else
+                {
+                  solve(part->factor, rhs, false);
+                  solve(part->factor, rhs, true);
+                }
               rhs /= scales[c];
               parts.push_back(std::move(rhs));
             }

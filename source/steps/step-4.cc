@@ -47,6 +47,7 @@
 #include <fuzzycontact/fuzzy/fuzzy_parameters.h>
 #include <fuzzycontact/fuzzy/global_stage.h>
 #include <fuzzycontact/fuzzy/optimisation_method.h>
+#include <fuzzycontact/fuzzy/proof_feedback.h>
 #include <fuzzycontact/fuzzy/vertex_method.h>
 #include <fuzzycontact/output/fuzzy_report.h>
 #include <fuzzycontact/output/output_files.h>
@@ -92,6 +93,7 @@ namespace Step4
     FuzzyParameterSet         fuzzy;
     FuzzyContactModelSettings model;
     OptimisationSettings      optimisation;
+    ProofSettings             proofs;
     std::vector<std::string>  warnings;
 
     void
@@ -147,6 +149,7 @@ namespace Step4
       fuzzy.declare_parameters(prm);
       FuzzyContactModelSettings::declare_parameters(prm);
       OptimisationSettings::declare_parameters(prm);
+      ProofSettings::declare_parameters(prm);
     }
 
     void
@@ -172,6 +175,7 @@ namespace Step4
       prm.leave_subsection();
       model.parse_parameters(prm);
       optimisation.parse_parameters(prm);
+      proofs.parse_parameters(prm);
       ProgressLines::parse_parameters(prm);
       InputChecks::check(model.modal);
       InputChecks::check(model.fl2c);
@@ -216,6 +220,12 @@ namespace Step4
     }
   };
 
+
+  // The exit status of a run whose results were written but some of whose
+  // bounds are not proven within the tolerance (doc/fuzzy-study.md); 1 is
+  // an error (nothing written), 0 success.
+  constexpr int unproven_exit_status = 3;
+  int           exit_status          = 0;
 
   // @sect3{The FuzzyStudy class}
   class FuzzyStudy
@@ -369,17 +379,26 @@ namespace Step4
         results.free_bodies     = model->bodies_held_by_contact();
       }
 
-    results.optimisation = bounds(OptimisationMethod(parameters.optimisation),
-                                  reduced,
-                                  "optimisation (reduced model)");
     {
       // Every bound's proof: its argument once more, exactly, on the
       // factorisations of the offline build (shared by the ranks, in the
-      // proofs' time). A level without a bound, or an exact solve without
-      // equilibrium, has no exact value (NaN, said in the report).
-      const double       shared = model->share_factorisations(&timer);
-      TimerOutput::Scope scope(timer, "proofs (full order at the bounds)");
+      // proofs' time; a changed zone modulus by conjugate gradients on
+      // them). A bound the proof does not confirm within the tolerance
+      // makes the model richer there, and the bounds are searched again
+      // (fuzzy/proof_feedback.h).
+      const ProofSettings &ps     = parameters.proofs;
+      const double         shared = model->share_factorisations(&timer);
       model->set_reuse_factorisations(true);
+      model->set_iterative_solves(
+        ps.solver == ProofSettings::Solver::cg
+          ? FullOrderModel::ChangedStiffness::cg
+        : ps.solver == ProofSettings::Solver::factorisation
+          ? FullOrderModel::ChangedStiffness::factorisation
+          : FullOrderModel::ChangedStiffness::automatic,
+        ps.cg_tolerance,
+        ps.cg_max_iterations,
+        "keys 'cg tolerance' and 'cg max "
+        "iterations' of subsection Proofs");
       const Response proved = [&](const std::vector<double> &p) {
         std::vector<double> values;
         if (!p.empty())
@@ -388,9 +407,49 @@ namespace Step4
           values.assign(names.size(), std::numeric_limits<double>::quiet_NaN());
         return values;
       };
-      results.proofs = prove_bounds(results.optimisation, proved, comm);
-      results.proofs.wall_time += shared;
-      results.has_proofs = true;
+      unsigned int       round  = 0;
+      const ProvenBounds proven = prove_and_correct(
+        [&]() {
+          return bounds(OptimisationMethod(parameters.optimisation),
+                        reduced,
+                        "optimisation (reduced model)");
+        },
+        [&](const FuzzyOutputBounds &b) {
+          TimerOutput::Scope scope(timer, "proofs (full order at the bounds)");
+          return prove_bounds(b, proved, comm);
+        },
+        [&](const std::vector<std::vector<double>> &points) {
+          ++round;
+          const unsigned int added = model->enrich(points, &timer);
+          report.say(FuzzyStudyReport::enrichment(round,
+                                                  points.size(),
+                                                  added,
+                                                  ps.tolerance));
+          return added;
+        },
+        ps);
+      model->set_iterative_solves(
+        FullOrderModel::ChangedStiffness::factorisation);
+      results.optimisation               = proven.bounds;
+      results.proofs                     = proven.proofs;
+      results.optimisation.wall_time     = 0;
+      results.optimisation.n_evaluations = 0;
+      results.proofs.wall_time           = shared;
+      results.proofs.n_evaluations       = 0;
+      for (const ProofRound &r : proven.rounds)
+        {
+          results.optimisation.wall_time += r.search_time;
+          results.optimisation.n_evaluations += r.evaluations;
+          results.proofs.wall_time += r.proof_time + r.enrichment_time;
+          results.proofs.n_evaluations += r.proofs;
+        }
+      results.has_proofs     = true;
+      results.proof_rounds   = proven.rounds;
+      results.unproven       = proven.unproven;
+      results.proof_stop     = proven.stopped;
+      results.proof_settings = ps;
+      results.proof_cg       = model->iterative_statistics();
+      results.model_after    = round > 0 ? model->describe() : "";
     }
     if (parameters.vertex_method)
       {
@@ -460,6 +519,20 @@ namespace Step4
     write_output();
     timer.print_summary();
     pcout << sections_per_rank(timer, comm); // with several ranks
+    if (!results.unproven.empty() && !parameters.proofs.accept_unproven)
+      {
+        if (pcout.is_active())
+          std::cerr << "step-4: " << results.unproven.size()
+                    << " bound(s) not proven within "
+                    << parameters.proofs.tolerance
+                    << " of their output's range (the warnings in "
+                       "report.txt); exit status "
+                    << unproven_exit_status
+                    << " ('accept unproven' of subsection Proofs accepts "
+                       "them)"
+                    << std::endl;
+        exit_status = unproven_exit_status;
+      }
   }
 } // namespace Step4
 
@@ -483,5 +556,5 @@ main(int argc, char **argv)
   if (status != 0 &&
       dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
     MPI_Abort(MPI_COMM_WORLD, status);
-  return status;
+  return status != 0 ? status : Step4::exit_status;
 }

@@ -1,4 +1,6 @@
 #include <fuzzycontact/base/input.h>
+#include <fuzzycontact/base/limits.h>
+#include <fuzzycontact/base/timer_section.h>
 #include <fuzzycontact/study/fuzzy_contact_model.h>
 
 #include <deal.II/base/exceptions.h>
@@ -37,14 +39,33 @@ namespace FuzzyContact
                       "DoFs to each component's modes (else modes only, "
                       "as in the paper).");
     prm.declare_entry("zone correction",
-                      "residual flexibility",
-                      Patterns::Selection("residual flexibility|galerkin"),
-                      "For zone moduli and densities (re-analysed modes): "
-                      "keep the static correction's flexibility at its "
-                      "nominal value ('residual flexibility', cheap) or "
-                      "project the stiffness onto [re-analysed modes, static "
-                      "correction modes] ('galerkin', more accurate, a dense "
+                      "krylov",
+                      Patterns::Selection(
+                        "krylov|residual flexibility|galerkin"),
+                      "For zone moduli: re-analyse the static correction by "
+                      "Krylov vectors (K0^-1 K_z)^j K0^-1 E, compressed, "
+                      "until the contact flexibility at the corners of the "
+                      "fuzzy box is within 'zone correction tolerance' of "
+                      "the exact one ('krylov'; no modes needed); or the "
+                      "paper's re-analysed modes with the static correction's "
+                      "flexibility kept at its nominal value ('residual "
+                      "flexibility', cheap but wrong by the change of that "
+                      "flexibility) or projected onto [re-analysed modes, "
+                      "static correction modes] ('galerkin', a dense "
                       "factorisation per evaluation).");
+    prm.declare_entry("zone correction tolerance",
+                      "1e-8",
+                      Patterns::Double(0),
+                      "krylov: the relative error (Frobenius norm) of a "
+                      "re-analysed component's contact flexibility and load "
+                      "gaps at every corner of the fuzzy box, against exact "
+                      "factorisations there, that the Krylov vectors must "
+                      "reach.");
+    prm.declare_entry("zone correction max degree",
+                      "8",
+                      Patterns::Integer(1, 50),
+                      "krylov: the highest power j of K0^-1 K_z in the "
+                      "Krylov vectors.");
     prm.declare_entry("modes",
                       "when needed",
                       Patterns::Selection("when needed|always"),
@@ -68,12 +89,22 @@ namespace FuzzyContact
     mesh_refinements = prm.get_integer("mesh refinements");
     contact_solver   = prm.get("contact solver");
     prm.enter_subsection("Reduced models");
-    reduced.static_correction = prm.get_bool("static correction");
+    reduced.static_correction         = prm.get_bool("static correction");
+    const std::string zone_correction = prm.get("zone correction");
     reduced.zone_correction =
-      prm.get("zone correction") == "galerkin"
+      zone_correction == "galerkin"
         ? ReducedModelSettings::ZoneCorrection::galerkin
+      : zone_correction == "krylov"
+        ? ReducedModelSettings::ZoneCorrection::krylov
         : ReducedModelSettings::ZoneCorrection::residual_flexibility;
-    modes_when_needed = (prm.get("modes") == "when needed");
+    reduced.krylov.tolerance =
+      Input::in_range(prm.get_double("zone correction tolerance"),
+                      1e-15,
+                      1e-1,
+                      "Reduced models: zone correction tolerance",
+                      "a relative error between 1e-15 and 0.1");
+    reduced.krylov.max_degree = prm.get_integer("zone correction max degree");
+    modes_when_needed         = (prm.get("modes") == "when needed");
     prm.leave_subsection();
     modal.parse_parameters(prm);
     AssertThrow(modal.cutoff_frequency == 0,
@@ -210,17 +241,40 @@ namespace FuzzyContact
     // does not depend on a density; a body's modulus scales its stiffness,
     // and a body whose stiffness does not change shape is exact with the
     // static correction alone.
+    // With the Krylov static correction (the default), a zone modulus is
+    // followed by the static correction itself, checked at the corners of
+    // the box: the modes are not needed for it either.
     const unsigned int n_c = bodies->n_components();
     const bool         all =
       !settings.modes_when_needed || !settings.reduced.static_correction;
+    const bool krylov = settings.reduced.zone_correction ==
+                        ReducedModelSettings::ZoneCorrection::krylov;
     std::vector<bool> needed(n_c, all);
     std::string       names;
+    std::vector<bool> reshaped(n_c, false);
     for (const VaryingQuantity &v : varying)
       {
         if (v.quantity.reshapes_stiffness())
-          needed[v.quantity.component] = true;
+          {
+            needed[v.quantity.component] =
+              needed[v.quantity.component] || !krylov;
+            reshaped[v.quantity.component] = true;
+          }
         names += (names.empty() ? "" : ", ") + v.quantity.name;
       }
+    // Why a component gets no modes.
+    const auto reason = [&](const unsigned int c) {
+      return reshaped[c]
+               ? std::string(
+                   "its zone moduli reshape its stiffness, and the static "
+                   "correction follows them by Krylov vectors (zone "
+                   "correction = krylov), checked at the corners of the "
+                   "fuzzy box")
+               : std::string(
+                   "no fuzzy parameter changes the shape of its stiffness, "
+                   "so the static correction alone makes its reduced "
+                   "contact flexibility exact");
+    };
     if (std::find(needed.begin(), needed.end(), true) != needed.end())
       {
         // Where the components are spread over the ranks, each computes the
@@ -233,15 +287,24 @@ namespace FuzzyContact
         std::string without;
         for (unsigned int c = 0; c < n_c; ++c)
           if (!needed[c])
-            without +=
-              (without.empty() ? "" : ", ") + bodies->component(c).name();
+            without += (without.empty() ? "" : "; ") +
+                       bodies->component(c).name() + ": " + reason(c);
         if (!without.empty())
-          skipped_stages =
-            "no modal analysis of " + without +
-            ": no fuzzy parameter changes the shape of its stiffness, so the "
-            "static correction alone makes its reduced contact flexibility "
-            "exact (Reduced models/modes = always computes the modes anyway)";
+          skipped_stages = "no modal analysis of " + without +
+                           " (Reduced models/modes = always computes the "
+                           "modes anyway)";
         return component_modes(*bodies, settings.modal, timer, owned);
+      }
+    if (std::find(reshaped.begin(), reshaped.end(), true) != reshaped.end())
+      {
+        std::string list;
+        for (unsigned int c = 0; c < n_c; ++c)
+          list += (list.empty() ? "" : "; ") + bodies->component(c).name() +
+                  ": " + reason(c);
+        skipped_stages = "no modal analysis (" + list +
+                         "; Reduced models/modes = always computes the modes "
+                         "anyway)";
+        return std::vector<ModalBasis>(n_c);
       }
     skipped_stages =
       "no modal analysis: every fuzzy parameter (" + names +
@@ -493,6 +556,75 @@ namespace FuzzyContact
   FuzzyContactModel::set_reuse_factorisations(const bool reuse)
   {
     full_model->set_reuse_factorisations(reuse);
+  }
+
+
+  void
+  FuzzyContactModel::set_iterative_solves(
+    const FullOrderModel::ChangedStiffness mode,
+    const double                           tolerance,
+    const unsigned int                     max_iterations,
+    const std::string                     &keys)
+  {
+    full_model->set_iterative_solves(mode, tolerance, max_iterations, keys);
+  }
+
+
+  const IterativeSolveStatistics &
+  FuzzyContactModel::iterative_statistics() const
+  {
+    return full_model->iterative_statistics();
+  }
+
+
+  const ReducedOrderModel &
+  FuzzyContactModel::reduced_order_model() const
+  {
+    return *reduced_model;
+  }
+
+
+  unsigned int
+  FuzzyContactModel::enrich(const std::vector<std::vector<double>> &points,
+                            TimerOutput                            *timer)
+  {
+    // Every rank solves every point (the same factorisations give the same
+    // fields) and keeps the fields of the components it built.
+    std::vector<std::vector<Vector<double>>> fields(bodies->n_components());
+    {
+      auto scope = timer_section(timer, "model made richer (exact fields)");
+      for (const std::vector<double> &p : points)
+        {
+          ContactSolution s;
+          at_point(p, "the exact full-order solve for a snapshot", [&]() {
+            full_model->set_state(state(p));
+            s = full_model->solve_with_fields();
+            return std::vector<double>();
+          });
+          AssertThrow(s.displacements.size() == bodies->n_components(),
+                      ExcMessage("FuzzyContactModel: the exact solver gave no "
+                                 "displacement fields for a snapshot."));
+          unsigned int first = 0;
+          for (unsigned int c = 0; c < bodies->n_components(); ++c)
+            {
+              const Component &component = bodies->component(c);
+              Vector<double>   u         = s.displacements[c];
+              // Without the free motions: those are unknowns of the
+              // contact problem, not of the basis.
+              for (unsigned int j = 0; j < component.free_motions().size(); ++j)
+                u.add(-s.rigid[first + j], component.free_motions()[j]);
+              first += component.free_motions().size();
+              if (builder[c] == (n_ranks_building > 1
+                                   ? Utilities::MPI::this_mpi_process(comm)
+                                   : 0))
+                fields[c].push_back(std::move(u));
+            }
+        }
+    }
+    // The bases are enriched at the nominal materials (those they were
+    // built at).
+    bodies->set_materials(SceneState(scene));
+    return reduced_model->add_snapshots(fields, timer);
   }
 
 

@@ -84,11 +84,20 @@ namespace FuzzyContact
     // The basis and its reduced matrices (on the rank that built it: every
     // rank unless the components are spread over the ranks) and its sizes
     // (on every rank).
-    std::unique_ptr<ReducedComponent> reduced;
-    unsigned int                      n_modes = 0, n_corrections = 0;
-    ReducedComponentMatrices          nominal_matrices;
+    std::shared_ptr<ReducedComponent> reduced;
+    unsigned int             n_modes = 0, n_corrections = 0, n_added = 0;
+    ReducedComponentMatrices nominal_matrices;
     // The static correction enters as a fixed residual flexibility.
     bool split = false;
+
+    // The static correction re-analysed by Krylov vectors (zone correction
+    // = krylov, or a model made richer by snapshots), on the rank that
+    // built it, and the names of its parameters (the modulus quantities).
+    std::unique_ptr<ZoneStaticCorrection> zone;
+    std::vector<SceneQuantity>            zone_quantities;
+    std::string                           zone_description;
+    // (no modes, for a static correction without them)
+    ModalBasis no_modes;
 
     // HPTP: the reanalysis and the projections that turn Y(p) into the
     // component's reduced matrices.
@@ -114,6 +123,8 @@ namespace FuzzyContact
       : bodies(bodies)
       , settings(settings)
       , solver(std::make_unique<FL2CSolver>())
+      , varying(varying)
+      , comm(comm)
   {
     const unsigned int n_c = bodies.n_components();
     AssertThrow(modes.size() == n_c && observed.size() == n_c,
@@ -161,7 +172,7 @@ namespace FuzzyContact
     // With several ranks, each component is built on one (builders()),
     // with its reanalysis, and its blocks of the reduced contact problem
     // are formed there and sent to all.
-    const std::vector<unsigned int> owner = builders(n_c, varying, comm);
+    owner             = builders(n_c, varying, comm);
     const bool spread = Utilities::MPI::job_supports_mpi() &&
                         Utilities::MPI::n_mpi_processes(comm) > 1;
     const unsigned int rank =
@@ -183,10 +194,15 @@ namespace FuzzyContact
           settings.zone_correction ==
             ReducedModelSettings::ZoneCorrection::residual_flexibility &&
           m.n_corrections > 0;
-        nominal.push_back(m.split ? columns(m.nominal_matrices, 0, m.n_modes)
-                                  : m.nominal_matrices);
         if (m.hptp && owner[c] == rank)
           build_reanalysis(m, c, varying, timer);
+        // (A Krylov static correction starts at the nominal values: its
+        // active part; the inert part is set below as the fixed part.)
+        nominal.push_back(
+          m.split ? columns(m.nominal_matrices, 0, m.n_modes)
+          : m.zone != nullptr
+            ? m.zone->matrices(zone_values(m, scene_values), m.nominal_matrices)
+            : m.nominal_matrices);
       }
 
     // (With several ranks, each forms its components' blocks, and then
@@ -215,6 +231,23 @@ namespace FuzzyContact
                                 columns(models[c]->nominal_matrices,
                                         models[c]->n_modes,
                                         models[c]->n_corrections));
+      else
+        set_inert_part(c);
+  }
+
+
+  // The inert part of a Krylov static correction (K_r = I whatever the
+  // parameters) as the fixed part of its component, or none.
+  void
+  ReducedOrderModel::set_inert_part(const unsigned int c)
+  {
+    const ComponentModel &m = *models[c];
+    if (m.zone == nullptr)
+      return;
+    if (m.zone->size() > m.zone->check().n_active)
+      reduced->set_fixed_part(c, m.zone->fixed_matrices(m.nominal_matrices));
+    else
+      reduced->clear_fixed_part(c);
   }
 
 
@@ -222,7 +255,7 @@ namespace FuzzyContact
   ReducedOrderModel::solves_here() const
   {
     for (const auto &m : models)
-      if (m->hptp && m->reanalysis == nullptr)
+      if (m->hptp && m->reanalysis == nullptr && m->zone == nullptr)
         return false;
     return true;
   }
@@ -242,7 +275,7 @@ namespace FuzzyContact
     {
       const auto factorisation = bodies.stiffness_factorisation(c, timer);
       auto       scope = timer_section(timer, "static correction modes");
-      m.reduced        = std::make_unique<ReducedComponent>(component,
+      m.reduced        = std::make_shared<ReducedComponent>(component,
                                                      m.modes,
                                                      factorisation,
                                                      interface.contact_dofs(c),
@@ -284,6 +317,91 @@ namespace FuzzyContact
     m.reanalysis_vectors = sizes[3];
     m.modes.eigenvalues =
       Utilities::MPI::broadcast(comm, m.modes.eigenvalues, owner);
+    m.zone_description =
+      Utilities::MPI::broadcast(comm, m.zone_description, owner);
+  }
+
+
+  unsigned int
+  ReducedOrderModel::add_snapshots(
+    const std::vector<std::vector<Vector<double>>> &fields,
+    TimerOutput                                    *timer)
+  {
+    AssertDimension(fields.size(), models.size());
+    const bool spread = Utilities::MPI::job_supports_mpi() &&
+                        Utilities::MPI::n_mpi_processes(comm) > 1;
+    const unsigned int rank =
+      spread ? Utilities::MPI::this_mpi_process(comm) : 0;
+    auto         scope = timer_section(timer, "model made richer (snapshots)");
+    unsigned int added = 0;
+    for (unsigned int c = 0; c < models.size(); ++c)
+      {
+        ComponentModel &m = *models[c];
+        if (owner[c] == rank && !fields[c].empty())
+          {
+            if (m.hptp)
+              {
+                // The Krylov static correction, if the component does not
+                // have it yet: its residual flexibility (kept nominal) or
+                // its Galerkin form on T Y(p) cannot take snapshots.
+                if (m.zone == nullptr)
+                  {
+                    build_zone_correction(m, c, varying, timer);
+                    if (m.split)
+                      reduced->clear_fixed_part(c);
+                    m.split = false;
+                  }
+                added += m.zone->add_vectors(fields[c]);
+                m.zone_description = m.zone->describe();
+                set_inert_part(c);
+              }
+            else
+              {
+                const unsigned int n = m.reduced->add_vectors(fields[c]);
+                if (n > 0)
+                  m.nominal_matrices =
+                    m.reduced->matrices(bodies.interface().gap_operator(c),
+                                        m.nominal_matrices.observed_dofs);
+                added += n;
+              }
+          }
+        // The blocks of a component not re-analysed are those of its
+        // nominal matrices (scaled per state): formed where it was built,
+        // sent to all. A re-analysed one is replaced per state.
+        if (!m.hptp)
+          {
+            const unsigned int changed =
+              spread
+                ? Utilities::MPI::broadcast(comm,
+                                            owner[c] == rank ? m.reduced->size()
+                                                             : 0u,
+                                            owner[c])
+                : m.reduced->size();
+            if (changed != m.n_modes + m.n_corrections + m.n_added)
+              {
+                if (spread)
+                  reduced->replace_component(c,
+                                             m.nominal_matrices,
+                                             owner[c],
+                                             comm);
+                else
+                  reduced->replace_component(c, m.nominal_matrices);
+                m.n_added = changed - m.n_modes - m.n_corrections;
+              }
+          }
+        else if (spread)
+          m.zone_description =
+            Utilities::MPI::broadcast(comm, m.zone_description, owner[c]);
+      }
+    return spread ? Utilities::MPI::sum(added, comm) : added;
+  }
+
+
+  const ZoneCorrectionCheck *
+  ReducedOrderModel::zone_correction_check(const unsigned int c) const
+  {
+    AssertIndexRange(c, models.size());
+    return models[c]->zone != nullptr ? &models[c]->zone->check() : nullptr;
   }
 
 
@@ -311,6 +429,14 @@ namespace FuzzyContact
         for (const VaryingQuantity &v : varying)
           if (v.quantity.name == q.name)
             ranges.push_back(v.range);
+      }
+    const bool krylov =
+      settings.zone_correction == ReducedModelSettings::ZoneCorrection::krylov;
+    if (krylov && m.n_modes == 0)
+      {
+        // No modes: the static correction and its Krylov vectors alone.
+        build_zone_correction(m, c, varying, timer);
+        return;
       }
     const ReanalysisSettings &rs = settings.reanalysis;
     // The order is the lowest whose change to the next order meets the
@@ -351,6 +477,13 @@ namespace FuzzyContact
       build(rs.max_order);
     m.reanalysis_order   = m.reanalysis->order();
     m.reanalysis_vectors = m.reanalysis->basis_size(m.reanalysis_order);
+    if (krylov)
+      {
+        // The modes and their HPTP terms join the static correction and
+        // its Krylov vectors in one Galerkin basis.
+        build_zone_correction(m, c, varying, timer);
+        return;
+      }
 
     auto                scope = timer_section(timer, "reanalysis projections");
     const ReducedBasis &T     = m.reanalysis->basis();
@@ -398,6 +531,100 @@ namespace FuzzyContact
           psi_f[j] = V_f[n_m + j];
         m.psi_f.push_back(std::move(psi_f));
       }
+  }
+
+
+  // The Krylov static correction of component c (zone_static_correction.h)
+  // for its modulus quantities over their ranges, with the modes and their
+  // HPTP terms if the component has a reanalysis.
+  void
+  ReducedOrderModel::build_zone_correction(
+    ComponentModel                     &m,
+    const unsigned int                  c,
+    const std::vector<VaryingQuantity> &varying,
+    TimerOutput                        *timer)
+  {
+    const Component                       &component = bodies.component(c);
+    std::vector<std::string>               names;
+    std::vector<std::pair<double, double>> ranges;
+    m.zone_quantities.clear();
+    for (const SceneQuantity &q : m.quantities)
+      if (q.kind != SceneQuantity::Kind::density)
+        for (const VaryingQuantity &v : varying)
+          if (v.quantity.name == q.name)
+            {
+              m.zone_quantities.push_back(q);
+              names.push_back(q.name);
+              ranges.emplace_back(v.range.lower, v.range.upper);
+            }
+    std::vector<Vector<double>> T;
+    if (m.reanalysis != nullptr)
+      {
+        const ReducedBasis &basis = m.reanalysis->basis();
+        for (unsigned int i = 0;
+             i < m.reanalysis->basis_size(m.reanalysis_order);
+             ++i)
+          T.push_back(basis[i]);
+      }
+    // (On the nominal factorisation the basis was built on: the component
+    // itself must be at its nominal materials.)
+    AssertThrow(component.zone_moduli() == m.nominal_moduli,
+                ExcMessage("ReducedOrderModel: component " + component.name() +
+                           " is not at its nominal moduli; its Krylov static "
+                           "correction is built there."));
+    // The nominal static correction without modes: the component's own if
+    // it has none.
+    std::shared_ptr<const ReducedComponent> static_part = m.reduced;
+    if (m.reduced->n_modes() > 0 || m.reduced->n_added() > 0 ||
+        m.reduced->n_corrections() == 0)
+      {
+        auto scope  = timer_section(timer, "static correction modes");
+        static_part = std::make_shared<ReducedComponent>(
+          component,
+          m.no_modes,
+          m.reduced->stiffness_factorisation(),
+          bodies.interface().contact_dofs(c),
+          true,
+          settings.rank_tolerance);
+      }
+    m.zone =
+      std::make_unique<ZoneStaticCorrection>(component,
+                                             names,
+                                             ranges,
+                                             static_part,
+                                             T,
+                                             bodies.interface().gap_operator(c),
+                                             m.nominal_matrices.observed_dofs,
+                                             settings.krylov,
+                                             timer);
+    m.zone_description = m.zone->describe();
+  }
+
+
+  // The parameter values of a component's Krylov static correction at
+  // @p state (checked: the state changes its zones through them only).
+  std::vector<double>
+  ReducedOrderModel::zone_values(const ComponentModel &m,
+                                 const SceneState     &state) const
+  {
+    const unsigned int  c = m.quantities.front().component;
+    std::vector<double> values;
+    for (const SceneQuantity &q : m.zone_quantities)
+      values.push_back(q.value(state, bodies.scene()));
+    const ParameterModel &model = m.zone->model();
+    const auto            moduli =
+      model.zone_materials(model.relative_changes(values)).first;
+    for (unsigned int z = 0; z < moduli.size(); ++z)
+      AssertThrow(std::abs(moduli[z] - state.zone_moduli[c][z]) <=
+                    1e-12 * state.zone_moduli[c][z],
+                  ExcMessage("The reduced model of component " +
+                             bodies.component(c).name() +
+                             " was built to vary its zone moduli through "
+                             "its fuzzy parameters only; the state to solve "
+                             "changes zone " +
+                             bodies.scene().components[c].zones[z].name +
+                             " otherwise."));
+    return values;
   }
 
 
@@ -525,7 +752,11 @@ namespace FuzzyContact
         const ComponentModel &m = *models[c];
         if (m.hptp)
           {
-            reduced->replace_component(c, reanalysed_matrices(m, state));
+            reduced->replace_component(
+              c,
+              m.zone != nullptr
+                ? m.zone->matrices(zone_values(m, state), m.nominal_matrices)
+                : reanalysed_matrices(m, state));
             continue;
           }
         // Moduli that are the nominal ones times one factor scale the
@@ -599,7 +830,15 @@ namespace FuzzyContact
             out << "fuzzy";
             for (const SceneQuantity &q : m.quantities)
               out << " " << q.name;
-            if (m.hptp)
+            if (m.hptp && !m.zone_description.empty())
+              {
+                out << ": " << m.zone_description;
+                if (m.reanalysis_order > 0)
+                  out << "; modes by the parameter-independent HPTP, order "
+                      << m.reanalysis_order << " (" << m.reanalysis_vectors
+                      << " basis vectors)";
+              }
+            else if (m.hptp)
               {
                 out << ": parameter-independent HPTP, order "
                     << m.reanalysis_order << " (" << m.reanalysis_vectors

@@ -20,6 +20,8 @@
 #ifndef fuzzycontact_base_sparse_cholesky_h
 #define fuzzycontact_base_sparse_cholesky_h
 
+#include <fuzzycontact/base/stiffness_solver.h>
+
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/types.h>
 #include <deal.II/lac/full_matrix.h>
@@ -34,14 +36,14 @@ namespace FuzzyContact
 {
   using namespace dealii;
 
-  class SparseCholesky
+  class SparseCholesky : public StiffnessSolver
   {
   public:
     SparseCholesky();
     SparseCholesky(const SparseCholesky &) = delete;
     SparseCholesky &
     operator=(const SparseCholesky &) = delete;
-    ~SparseCholesky();
+    ~SparseCholesky() override;
 
     /**
      * Factorises the symmetric positive definite matrix @p A (only its
@@ -59,11 +61,11 @@ namespace FuzzyContact
 
     /** Size of the factorised matrix (0 before factorize()). */
     types::global_dof_index
-    n() const;
+    n() const override;
 
     /** Overwrites @p b by A^{-1} b. */
     void
-    solve(Vector<double> &b) const;
+    solve(Vector<double> &b) const override;
     /** dst = A^{-1} src (the interface of an inverse operator). */
     void
     vmult(Vector<double> &dst, const Vector<double> &src) const;
@@ -124,6 +126,13 @@ namespace FuzzyContact
     /** Entries of L, and the bytes CHOLMOD holds for the factorisation. */
     double
     n_factor_entries() const;
+    /**
+     * Floating-point operations of the numeric factorisation (CHOLMOD's
+     * count from the symbolic analysis): with n_factor_entries(), what a
+     * new factorisation costs against a solve (about 4 entries' worth).
+     */
+    double
+    n_factor_flops() const;
     std::size_t
     memory_consumption() const;
 

@@ -48,6 +48,7 @@
 #define fuzzycontact_contact_full_order_contact_h
 
 #include <fuzzycontact/base/sparse_cholesky.h>
+#include <fuzzycontact/base/stiffness_solver.h>
 #include <fuzzycontact/contact/active_set_solver.h>
 #include <fuzzycontact/contact/contact_interface.h>
 #include <fuzzycontact/contact/contact_problem.h>
@@ -82,10 +83,15 @@ namespace FuzzyContact
      * models were built from), which must be that of component c's
      * current stiffness. A shared factorisation is not counted by
      * n_factorizations().
+     *
+     * (Hook for the proofs of a zone study, study/full_order_model.h: the
+     * source may return any StiffnessSolver of the current stiffness, e.g.
+     * conjugate gradients preconditioned by the nominal factorisation,
+     * base/factor_preconditioned_cg.h, instead of a new factorisation.)
      */
     void
     set_factorisation_source(
-      std::function<std::shared_ptr<const SparseCholesky>(unsigned int)>
+      std::function<std::shared_ptr<const StiffnessSolver>(unsigned int)>
         source);
 
     /**
@@ -263,10 +269,10 @@ namespace FuzzyContact
     // far.
     struct Factorized
     {
-      std::shared_ptr<const SparseCholesky> inverse;
-      std::vector<double>                   moduli;
-      double                                scale = 1;
-      std::vector<Vector<double>>           load_responses;
+      std::shared_ptr<const StiffnessSolver> inverse; // (hook: any solver)
+      std::vector<double>                    moduli;
+      double                                 scale = 1;
+      std::vector<Vector<double>>            load_responses;
       // The weight's: K_ref^{-1} w_z per zone at unit density and the
       // reference force, and the densities its load response is at.
       std::vector<Vector<double>>                  weight_responses;
@@ -279,7 +285,7 @@ namespace FuzzyContact
     // Columns of W = sum_c (column of c) / s_c at the current scales.
     std::vector<std::unique_ptr<Vector<double>>> columns;
 
-    std::function<std::shared_ptr<const SparseCholesky>(unsigned int)>
+    std::function<std::shared_ptr<const StiffnessSolver>(unsigned int)>
                                 factorisation_source;
     std::optional<ContactState> last_state;
     unsigned int                factorizations     = 0;

@@ -9,10 +9,12 @@
 #ifndef fuzzycontact_output_fuzzy_report_h
 #define fuzzycontact_output_fuzzy_report_h
 
+#include <fuzzycontact/base/factor_preconditioned_cg.h>
 #include <fuzzycontact/fuzzy/bound_proof.h>
 #include <fuzzycontact/fuzzy/feasible_region.h>
 #include <fuzzycontact/fuzzy/fuzzy_parameters.h>
 #include <fuzzycontact/fuzzy/interval_method.h>
+#include <fuzzycontact/fuzzy/proof_feedback.h>
 #include <fuzzycontact/output/output_files.h>
 #include <fuzzycontact/output/report.h>
 #include <fuzzycontact/study/fuzzy_contact_model.h>
@@ -46,6 +48,18 @@ namespace FuzzyContact
     /** The exact value at the argument of every optimisation bound. */
     BoundProofs proofs;
     bool        has_proofs = false;
+    /**
+     * The rounds of search, proofs and enrichment (fuzzy/proof_feedback.h),
+     * the bounds left beyond the tolerance, why the rounds stopped, the
+     * settings, what the proofs' conjugate gradients did, and the model's
+     * description after it was made richer (empty if it was not).
+     */
+    std::vector<ProofRound>    proof_rounds;
+    std::vector<UnprovenBound> unproven;
+    std::string                proof_stop;
+    ProofSettings              proof_settings;
+    IterativeSolveStatistics   proof_cg;
+    std::string                model_after;
     /** Per parameter: why it cannot change the answer (empty: it can). */
     std::vector<std::string> inert;
     /** What each MPI rank assembled and factorised. */
@@ -125,6 +139,26 @@ namespace FuzzyContact
      */
     std::string
     equilibrium(const FuzzyStudyResults &results, nlohmann::json &json);
+
+    /**
+     * The line saying that round @p round of the proofs left bounds beyond
+     * @p tolerance and the model was made richer at @p n_points points by
+     * @p added vectors.
+     */
+    std::string
+    enrichment(const unsigned int round,
+               const std::size_t  n_points,
+               const unsigned int added,
+               const double       tolerance);
+
+    /**
+     * The proofs' rounds and the unproven bounds (one `warning:` line
+     * each), said in @p report and written into @p json ("proofs").
+     */
+    void
+    proof_summary(const FuzzyStudyResults &results,
+                  Report                  &report,
+                  nlohmann::json          &json);
 
     /** The parameters that cannot change the answer, if any. */
     std::string

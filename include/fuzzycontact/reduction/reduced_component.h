@@ -72,6 +72,12 @@ namespace FuzzyContact
   {
     /** K_r = V^T K V (k x k, symmetric positive definite). */
     FullMatrix<double> stiffness;
+    /**
+     * If not empty, K_r is diagonal, K_r = diag(stiffness_diagonal), and
+     * stiffness is left empty (a basis that diagonalises it, see
+     * zone_static_correction.h): no factorisation is needed.
+     */
+    Vector<double> stiffness_diagonal;
     /** C_r = C_c V (rows of the contact interface x k). */
     FullMatrix<double> gap_operator;
     /**
@@ -131,10 +137,11 @@ namespace FuzzyContact
     void
     serialize(Archive &archive, const unsigned int)
     {
-      archive &stiffness &gap_operator &loads &reference_forces
-        &stiffness_proportional &observed_dofs &observation &rigid_gaps &
-          rigid_loads &rigid_observation &motion_names &weight_load &weight_gaps
-            &weight_observation &weight_rigid_loads &zone_densities;
+      archive &stiffness &stiffness_diagonal &gap_operator &loads
+        &reference_forces &stiffness_proportional &observed_dofs &observation
+          &rigid_gaps &rigid_loads &rigid_observation &motion_names &weight_load
+            &weight_gaps &weight_observation &weight_rigid_loads
+              &zone_densities;
     }
   };
 
@@ -166,15 +173,50 @@ namespace FuzzyContact
     n_modes() const;
     unsigned int
     n_corrections() const;
-    /** k = n_modes() + n_corrections(). */
+    /** Vectors added by add_vectors() (after the corrections). */
+    unsigned int
+    n_added() const;
+    /** k = n_modes() + n_corrections() + n_added(). */
     unsigned int
     size() const;
+
+    /**
+     * Enriches the basis with the vectors @p u (e.g. exact displacement
+     * fields of the component where a reduced answer was found wrong):
+     * each is made K-orthogonal to the basis (twice, at the nominal
+     * stiffness; one back-substitution per pass) and K-normalised, so that
+     * K_r stays diag(Lambda, I); a vector whose new part has a K-norm below
+     * 1e-10 of its own is dropped (already in the span). Returns how many
+     * were added. They are kept full-length.
+     */
+    unsigned int
+    add_vectors(const std::vector<Vector<double>> &u);
     bool
     has_static_correction() const;
 
     /** K_r = V^T K V at the nominal stiffness. */
     const FullMatrix<double> &
     stiffness() const;
+    /** The factorisation of the nominal stiffness the basis was built on. */
+    const std::shared_ptr<const SparseCholesky> &
+    stiffness_factorisation() const;
+    /**
+     * V^T K x at the nominal stiffness, without a back-substitution (the
+     * static correction's part is X^T (E^T x - R^T Phi^T K x)).
+     */
+    Vector<double>
+    stiffness_products(const Vector<double> &x) const;
+    /**
+     * The loads that make the static correction modes: without modes,
+     * Psi = K^{-1} F with F zero outside B (the factorisation's trailing
+     * DoFs, boundary_dofs()) and F_B = E_B X, returned here (|B| x
+     * n_corrections(); with modes, Psi is that minus Phi R X).
+     */
+    FullMatrix<double>
+    correction_loads() const;
+    /** B, in the order of the rows of correction_loads(). */
+    const std::vector<types::global_dof_index> &
+    boundary_dofs() const;
     /**
      * V^T K_z V for every zone z of the component. For a single-zone
      * component K = E K_z, so this is K_r / E; otherwise it is computed
@@ -245,6 +287,10 @@ namespace FuzzyContact
     FullMatrix<double> K_r;
     // K^{-1} w_z per zone (see weight_responses()).
     std::vector<Vector<double>> weight_fields;
+    // The nominal zone moduli (K = sum_z E_z K_z, whatever the component's
+    // current materials), and the vectors of add_vectors().
+    std::vector<double>         nominal_moduli;
+    std::vector<Vector<double>> added;
   };
 } // namespace FuzzyContact
 

@@ -161,6 +161,16 @@ namespace FuzzyContact
      */
     void
     replace_component(const unsigned int c, ReducedComponentMatrices matrices);
+    /**
+     * The same for a component built on rank @p owner of @p comm (its
+     * @p matrices read there only): its blocks are formed there and sent to
+     * the other ranks. Collective.
+     */
+    void
+    replace_component(const unsigned int       c,
+                      ReducedComponentMatrices matrices,
+                      const unsigned int       owner,
+                      const MPI_Comm           comm);
 
     /**
      * Gives component @p c a second, fixed part: its reduced model becomes
@@ -173,6 +183,9 @@ namespace FuzzyContact
      */
     void
     set_fixed_part(const unsigned int c, ReducedComponentMatrices fixed);
+    /** Removes the fixed part of component @p c (if any). */
+    void
+    clear_fixed_part(const unsigned int c);
 
     /** C_r,c K_r,c^{-1} C_r,c^T (both parts): W is their sum. */
     FullMatrix<double>
@@ -208,8 +221,11 @@ namespace FuzzyContact
     // observed displacements straight from the forces.
     struct Part
     {
-      ReducedComponentMatrices    matrices;
-      FullMatrix<double>          factor; // L (column-major: L^T row-major)
+      ReducedComponentMatrices matrices;
+      FullMatrix<double>       factor; // L (column-major: L^T row-major)
+      // A diagonal K_r (ReducedComponentMatrices::stiffness_diagonal): L
+      // is diag(root_diagonal) and factor is empty.
+      Vector<double>              root_diagonal;
       bool                        low_rank = false;
       FullMatrix<double>          flexibility; // dense W_c
       FullMatrix<double>          U;           // W_c = U U^T
@@ -245,9 +261,10 @@ namespace FuzzyContact
     };
     class Flexibility;
 
-    // Checks and factorises a part's matrices, and forms its blocks.
+    // Checks and factorises a part's matrices, and forms its blocks (W_c
+    // dense if @p dense, else as its factor U when its rank is low).
     void
-    compute_blocks(Part &part) const;
+    compute_blocks(Part &part, const bool dense = false) const;
     // Once every component's blocks are in variable: the reference load
     // forces and densities, the free motions of the bodies held by contact
     // alone (first_motion, the problem's RigidMotions), and W.

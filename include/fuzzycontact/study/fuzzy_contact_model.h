@@ -206,6 +206,32 @@ namespace FuzzyContact
     void
     set_reuse_factorisations(const bool reuse);
 
+    /** See FullOrderModel::set_iterative_solves(); default: factorise. */
+    void
+    set_iterative_solves(const FullOrderModel::ChangedStiffness mode,
+                         const double       tolerance      = 1e-12,
+                         const unsigned int max_iterations = 200,
+                         const std::string &keys           = "");
+    /** What the exact solves' conjugate gradients did so far. */
+    const IterativeSolveStatistics &
+    iterative_statistics() const;
+
+    /**
+     * Makes the reduced model richer at the parameter points @p points
+     * (where its answers were found wrong): the exact solution's
+     * displacement fields there, without the free motions of the bodies
+     * held by contact alone, join the components' bases
+     * (ReducedOrderModel::add_snapshots()). Returns how many vectors were
+     * added. Collective over the communicator of the constructor.
+     */
+    unsigned int
+    enrich(const std::vector<std::vector<double>> &points,
+           TimerOutput                            *timer = nullptr);
+
+    /** The reduced model (for its description and checks). */
+    const ReducedOrderModel &
+    reduced_order_model() const;
+
     /**
      * Where the components were built on different ranks: every rank gets
      * the stiffness factorisations made on the others (copies of their

@@ -16,15 +16,24 @@
 //    them exactly: its response is carried whole, per zone K^{-1} w_z
 //    (ReducedComponentMatrices::weight_gaps), times rho_z / s;
 //  - zone moduli that change the shape of the stiffness (those of single
-//    zones) go through the parameter-independent HPTP (modes T Y(p),
-//    the order chosen offline from a tolerance at the corners of the
-//    quantities' ranges). The static correction then enters one of two
-//    ways: "residual flexibility" (the default) keeps the flexibility of
-//    the static correction modes at its nominal value and adds it to that
-//    of the re-analysed modes (MacNeal), O(rows^2 n_modes) per state;
-//    "galerkin" projects the stiffness onto the basis [T Y(p), Psi] (zone
-//    projections precomputed offline), more accurate but a dense
-//    factorisation of the whole reduced stiffness per state;
+//    zones) are re-analysed. By default ("krylov") the static correction
+//    itself is: the stiffness is projected onto the nominal static
+//    correction, its Krylov vectors (K0^{-1} K_k)^j K0^{-1} E compressed
+//    level by level, and the modes and their HPTP terms if the study
+//    computes modes (reduction/zone_static_correction.h); the number of
+//    vectors is chosen offline by a tolerance on the contact flexibility
+//    at the corners of the quantities' ranges, checked against exact
+//    factorisations there, and a state costs O(rows k) with one zone
+//    parameter (a diagonalised pencil). The paper's way goes through the
+//    parameter-independent HPTP (modes T Y(p), the order chosen offline
+//    from a tolerance at the corners), and the static correction then
+//    enters one of two ways: "residual flexibility" keeps the flexibility
+//    of the static correction modes at its nominal value and adds it to
+//    that of the re-analysed modes (MacNeal), O(rows^2 n_modes) per state,
+//    but wrong by the change of the correction's flexibility; "galerkin"
+//    projects the stiffness onto the basis [T Y(p), Psi] (zone projections
+//    precomputed offline), more accurate but a dense factorisation of the
+//    whole reduced stiffness per state;
 //  - loads scale their load terms, friction coefficients and gaps enter the
 //    small contact problem directly.
 // A state that changes a component in a way the model was not built for
@@ -47,6 +56,7 @@
 #include <fuzzycontact/reanalysis/parameter_independent_reanalysis.h>
 #include <fuzzycontact/reanalysis/reanalysis_method.h>
 #include <fuzzycontact/reduction/reduced_model.h>
+#include <fuzzycontact/reduction/zone_static_correction.h>
 #include <fuzzycontact/scene/scene_quantity.h>
 #include <fuzzycontact/study/component_modes.h>
 #include <fuzzycontact/study/contact_model.h>
@@ -76,9 +86,12 @@ namespace FuzzyContact
     enum class ZoneCorrection
     {
       residual_flexibility,
-      galerkin
+      galerkin,
+      krylov
     };
-    ZoneCorrection zone_correction = ZoneCorrection::residual_flexibility;
+    ZoneCorrection zone_correction = ZoneCorrection::krylov;
+    /** The Krylov static correction's tolerance and levels (krylov). */
+    ZoneCorrectionSettings krylov;
     /**
      * Static correction modes whose Gram eigenvalue is below this fraction
      * of the largest are linearly dependent and dropped.
@@ -178,6 +191,29 @@ namespace FuzzyContact
     describe() const;
 
     /**
+     * Makes the model richer where it was found wrong (the feedback of the
+     * proofs of a fuzzy study's bounds): @p fields[c] holds displacement
+     * fields of component c (exact solutions at the points where the
+     * reduced answer missed), which join its basis, K-orthogonalised; a
+     * component whose zone moduli are re-analysed by HPTP is first given
+     * the Krylov static correction (its residual flexibility or Galerkin
+     * form gives way to it). Vectors already in a basis's span are
+     * dropped. Returns how many were added over all components.
+     * Collective over the constructor's communicator; @p fields need only
+     * be given on the rank that built each component.
+     */
+    unsigned int
+    add_snapshots(const std::vector<std::vector<Vector<double>>> &fields,
+                  TimerOutput *timer = nullptr);
+
+    /**
+     * The Krylov static correction's check of every component that has
+     * one (else nullptr), on the rank that built it.
+     */
+    const ZoneCorrectionCheck *
+    zone_correction_check(const unsigned int c) const;
+
+    /**
      * The displacement fields u_c = V_c q_c of @p solution (a solution of
      * this model at its current state); not for re-analysed components.
      */
@@ -194,6 +230,15 @@ namespace FuzzyContact
                      TimerOutput                        *timer);
     ReducedComponentMatrices
     reanalysed_matrices(const ComponentModel &m, const SceneState &state) const;
+    void
+    build_zone_correction(ComponentModel                     &m,
+                          const unsigned int                  c,
+                          const std::vector<VaryingQuantity> &varying,
+                          TimerOutput                        *timer);
+    std::vector<double>
+    zone_values(const ComponentModel &m, const SceneState &state) const;
+    void
+    set_inert_part(const unsigned int c);
     void
     build_component(ComponentModel                             &m,
                     const unsigned int                          c,
@@ -212,6 +257,11 @@ namespace FuzzyContact
     ContactWorkspace                             workspace_;
     std::string                                  label;
     unsigned int                                 n_load_steps = 1;
+    // The quantities varied and their ranges, the communicator and the
+    // rank that built each component (for add_snapshots()).
+    std::vector<VaryingQuantity> varying;
+    MPI_Comm                     comm;
+    std::vector<unsigned int>    owner;
   };
 } // namespace FuzzyContact
 

@@ -1,0 +1,21 @@
+# Checks a step-4 run whose first model was too poor (modes only): the
+# proofs made it richer and every bound ends proven within the tolerance
+# (included by run_program.cmake with RESULTS_JSON set, after exit 0).
+string(JSON all_proven GET "${RESULTS_JSON}" proofs all_proven)
+string(JSON n_rounds LENGTH "${RESULTS_JSON}" proofs rounds)
+string(JSON first GET "${RESULTS_JSON}" proofs rounds 0 largest_relative_error)
+string(JSON added GET "${RESULTS_JSON}" proofs rounds 0 vectors_added)
+string(JSON tolerance GET "${RESULTS_JSON}" proofs tolerance)
+if(NOT all_proven OR n_rounds LESS 2 OR NOT first GREATER tolerance OR added LESS 1)
+  message(FATAL_ERROR "expected a corrected model: all_proven ${all_proven}, ${n_rounds} rounds, first round's error ${first}, ${added} vectors added")
+endif()
+string(JSON n_outputs LENGTH "${RESULTS_JSON}" outputs)
+math(EXPR last "${n_outputs} - 1")
+foreach(k RANGE ${last})
+  string(JSON proof GET "${RESULTS_JSON}" outputs ${k} proof max_abs_difference_over_range)
+  string(JSON error GET "${RESULTS_JSON}" outputs ${k} max_rel_error)
+  if(NOT proof LESS 2e-4 OR NOT error LESS 0.005)
+    message(FATAL_ERROR "output ${k}: reduction error at the bounds ${proof}, ${error} from the Extension Principle")
+  endif()
+endforeach()
+message(STATUS "corrected in ${n_rounds} rounds (first round's error ${first} of the range)")
