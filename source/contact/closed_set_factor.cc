@@ -122,7 +122,7 @@ namespace FuzzyContact
     const unsigned int m = rows_.size();
     reserve(m + 1);
     // The new row of L: l = L^{-1} W_Br, stored in row m.
-    const double  *column = W.column(r);
+    const double       *column = W.column(r);
     std::vector<double> l(m);
     for (unsigned int i = 0; i < m; ++i)
       l[i] = column[rows_[i]];
@@ -133,7 +133,7 @@ namespace FuzzyContact
         trtrs("L", "N", "N", &n, &one, data.data(), &lda, l.data(), &n, &info);
         Assert(info == 0, ExcInternalError());
       }
-    const double w_rr  = column[r];
+    const double w_rr = column[r];
     const double pivot =
       w_rr - std::inner_product(l.begin(), l.end(), l.begin(), 0.);
     if (!(pivot > dependence * w_rr))

@@ -334,17 +334,17 @@ namespace FuzzyContact
     std::unique_ptr<ReducedOrderModel> reduced_model;
     std::unique_ptr<FullOrderModel>    full_model;
     // The reduced model's contact states at the points evaluated so far.
-    WarmStarts warm_starts;
-    std::string                        solver_name;
-    std::string                        skipped_stages;
-    std::vector<std::string>           inert_parameters;
-    std::string                        held_by_contact;
-    unsigned long                      n_limit_points = 0;
-    MPI_Comm                           comm;
-    MPI_Comm                           reduced_ranks     = MPI_COMM_NULL;
-    bool                               own_reduced_ranks = false;
-    std::vector<unsigned int>          builder; // the rank of each component
-    unsigned int                       n_ranks_building = 1;
+    WarmStarts                warm_starts;
+    std::string               solver_name;
+    std::string               skipped_stages;
+    std::vector<std::string>  inert_parameters;
+    std::string               held_by_contact;
+    unsigned long             n_limit_points = 0;
+    MPI_Comm                  comm;
+    MPI_Comm                  reduced_ranks     = MPI_COMM_NULL;
+    bool                      own_reduced_ranks = false;
+    std::vector<unsigned int> builder; // the rank of each component
+    unsigned int              n_ranks_building = 1;
   };
 } // namespace FuzzyContact
 

@@ -7,8 +7,10 @@
 // nearest point in that scaled Euclidean distance. Only what a solver
 // starts from is kept (statuses, slip directions, forces and free motions'
 // amplitudes per load step), and at most a fixed number of points (the
-// oldest go first); finding the nearest is a scan over them, negligible
-// next to a contact solve.
+// oldest go first); finding the nearest is a scan over their scaled
+// coordinates, kept in one contiguous array (a few microseconds for 4096
+// points: small even next to the 20-60 us solve of a scene with few
+// contact nodes).
 
 #ifndef fuzzycontact_study_warm_starts_h
 #define fuzzycontact_study_warm_starts_h
@@ -16,7 +18,6 @@
 #include <fuzzycontact/contact/contact_problem.h>
 
 #include <cstddef>
-#include <deque>
 #include <vector>
 
 namespace FuzzyContact
@@ -46,14 +47,19 @@ namespace FuzzyContact
     size() const;
 
   private:
-    struct Entry
-    {
-      std::vector<double>       x;
-      std::vector<ContactState> states;
-    };
+    // Coordinate i of x scaled by 1 / widths[i] (0 where widths[i] is 0).
+    void
+    scale(const std::vector<double> &x, std::vector<double> &scaled) const;
+
     std::vector<double> widths;
     std::size_t         capacity;
-    std::deque<Entry>   entries;
+    unsigned int        dimension = 0;
+    // A ring of at most capacity points: their scaled coordinates, one
+    // after the other, and their states; next: where the next point goes.
+    std::vector<double>                    coordinates;
+    std::vector<std::vector<ContactState>> states;
+    std::size_t                            next = 0;
+    mutable std::vector<double>            scaled_x;
   };
 } // namespace FuzzyContact
 
