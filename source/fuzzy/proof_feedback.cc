@@ -107,15 +107,40 @@ namespace FuzzyContact
   }
 
 
+  double
+  proof_magnitude(const FuzzyOutputBounds &bounds,
+                  const BoundProofs       &proofs,
+                  const unsigned int       k)
+  {
+    double     magnitude = 0;
+    const auto take      = [&](const double x) {
+      if (std::isfinite(x))
+        magnitude = std::max(magnitude, std::abs(x));
+    };
+    for (const Interval &i : bounds.bounds[k])
+      {
+        take(i.lower);
+        take(i.upper);
+      }
+    for (const auto *side : {&proofs.lower, &proofs.upper})
+      if (side->size() > k)
+        for (const BoundProof &p : (*side)[k])
+          take(p.exact);
+    return magnitude;
+  }
+
+
   std::vector<UnprovenBound>
   unproven_bounds(const FuzzyOutputBounds &bounds,
                   const BoundProofs       &proofs,
-                  const double             tolerance)
+                  const double             tolerance,
+                  const double             accuracy)
   {
     std::vector<UnprovenBound> result;
     for (unsigned int k = 0; k < bounds.bounds.size(); ++k)
       {
         const double range = proof_range(bounds, proofs, k);
+        const double floor = accuracy * proof_magnitude(bounds, proofs, k);
         for (unsigned int l = 0; l < bounds.bounds[k].size(); ++l)
           for (const bool upper : {false, true})
             {
@@ -127,7 +152,7 @@ namespace FuzzyContact
                 range > 0
                   ? std::abs(d) / range
                   : (d == 0 ? 0. : std::numeric_limits<double>::infinity());
-              if (!(relative <= tolerance))
+              if (!(relative <= tolerance) && !(std::abs(d) <= floor))
                 result.push_back(
                   {k,
                    l,
@@ -161,8 +186,10 @@ namespace FuzzyContact
         result.proofs         = prove(result.bounds);
         this_round.proof_time = clock.wall_time();
         this_round.proofs     = result.proofs.n_evaluations;
-        result.unproven =
-          unproven_bounds(result.bounds, result.proofs, settings.tolerance);
+        result.unproven       = unproven_bounds(result.bounds,
+                                          result.proofs,
+                                          settings.tolerance,
+                                          settings.accuracy);
         this_round.n_unproven = result.unproven.size();
         for (const UnprovenBound &u : result.unproven)
           this_round.largest = std::max(this_round.largest, u.relative);

@@ -357,7 +357,10 @@ namespace FuzzyContact
       std::ostringstream   out;
       out << "\nproofs: a bound is proven when |reduced - exact| at its "
              "argument is at most "
-          << sci(ps.tolerance) << " of its output's range ("
+          << sci(ps.tolerance) << " of its output's range, or "
+          << sci(ps.accuracy)
+          << " of its magnitude (the outputs' accuracy, Optimisation: "
+             "response tolerance) ("
           << r.proof_rounds.size() << " round(s) of search and proofs; "
           << r.proof_stop << ")\n";
       nlohmann::json rounds = nlohmann::json::array();
@@ -432,6 +435,7 @@ namespace FuzzyContact
                  << "\n";
       report.say(warnings.str());
       json["proofs"] = {{"tolerance", ps.tolerance},
+                        {"accuracy", ps.accuracy},
                         {"max_rounds", ps.max_rounds},
                         {"rounds", rounds},
                         {"stopped", r.proof_stop},

@@ -386,8 +386,10 @@ namespace Step4
       // them). A bound the proof does not confirm within the tolerance
       // makes the model richer there, and the bounds are searched again
       // (fuzzy/proof_feedback.h).
-      const ProofSettings &ps     = parameters.proofs;
-      const double         shared = model->share_factorisations(&timer);
+      // (Proven also within the accuracy asked of the outputs.)
+      ProofSettings ps    = parameters.proofs;
+      ps.accuracy         = parameters.optimisation.response_tolerance;
+      const double shared = model->share_factorisations(&timer);
       model->set_reuse_factorisations(true);
       model->set_iterative_solves(
         ps.solver == ProofSettings::Solver::cg
