@@ -1475,8 +1475,8 @@ namespace
     ComponentDescription &p2    = scene.components[1];
     p2.implicit_zone            = false;
     p2.zones                    = {
-                         MaterialZone{"under", {{0.1, 0.24}}, {{-1, 1}}, 210e9, 0.3, 7900},
-                         MaterialZone{"rest", {{0.24, 0.3}}, {{-1, 1}}, 210e9, 0.3, 7900}};
+                         MaterialZone{"under", {{0.1, 0.244}}, {{-1, 1}}, 210e9, 0.3, 7900},
+                         MaterialZone{"rest", {{0.244, 0.3}}, {{-1, 1}}, 210e9, 0.3, 7900}};
     return scene;
   }
 } // namespace
@@ -1622,7 +1622,7 @@ TEST(ReducedModel, KrylovStaticCorrectionTakesSnapshots)
 
 // The proofs' exact solves of a changed zone modulus by conjugate
 // gradients on the nominal factorisation: against a new factorisation
-// (K^{-1} b to 1e-10; the contact answers of FullOrderModel to 1e-10 of
+// (K^{-1} b to 1e-9; the contact answers of FullOrderModel to 1e-9 of
 // F_n and of the slave's displacement), with no factorisation made, a few
 // steps per solve, and a solve that does not converge names its keys.
 TEST(FullOrderModel, ConjugateGradientsAgreeWithARefactorisedSolve)
@@ -1651,7 +1651,10 @@ TEST(FullOrderModel, ConjugateGradientsAgreeWithARefactorisedSolve)
   direct.solve(x);
   cg.solve(y);
   y -= x;
-  EXPECT_LE(y.l2_norm(), 1e-10 * x.l2_norm());
+  // CG stops on the residual relative to b (1e-12): the error may be
+  // cond(K) times larger (measured 1.9e-10 of x); 1e-9 is ample for the
+  // proofs, whose tolerance is 1e-4 of an output's range.
+  EXPECT_LE(y.l2_norm(), 1e-9 * x.l2_norm());
   EXPECT_EQ(statistics->solves, 1u);
   EXPECT_LE(statistics->iterations, 40u); // condition number at most 2
   const FactorPreconditionedCG one_step(component.stiffness_matrix(),
@@ -1685,12 +1688,13 @@ TEST(FullOrderModel, ConjugateGradientsAgreeWithARefactorisedSolve)
       const Answer       a(setup, iterative.solve());
       EXPECT_EQ(setup.bodies.n_factorisations(1), before) << factor;
       const Answer f = full_order(setup);
-      EXPECT_NEAR(a.normal_force, f.normal_force, 1e-10 * f.normal_force);
-      EXPECT_LE(relative(a.slave_displacement, f.slave_displacement), 1e-10);
+      EXPECT_NEAR(a.normal_force, f.normal_force, 1e-9 * f.normal_force);
+      // (measured 1.2e-10 to 3.8e-10: CG's error, above)
+      EXPECT_LE(relative(a.slave_displacement, f.slave_displacement), 1e-9);
       // and with the displacement fields (the snapshots of the proofs)
       const ContactSolution s = iterative.solve_with_fields();
       ASSERT_EQ(s.displacements.size(), 2u);
-      EXPECT_NEAR(s.normal_force, f.normal_force, 1e-10 * f.normal_force);
+      EXPECT_NEAR(s.normal_force, f.normal_force, 1e-9 * f.normal_force);
     }
   EXPECT_GT(iterative.iterative_statistics().solves, 0u);
 }
