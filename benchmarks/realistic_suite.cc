@@ -22,8 +22,8 @@
 //  - the study's wall time, the whole program's, and its peak memory.
 //
 // The scenes: a filleted punch held by contact alone on a foundation
-// (prm/step-4-punch.prm with two load stages, prm/step-4-punch-one-stage.prm
-// without), a grout zone under it (prm/step-4-punch-grout.prm), the Hertz
+// (prm/step-4-punch.prm with two load stages, by the exact reduced solver
+// and by FL2C; prm/step-4-punch-one-stage.prm without), a grout zone under it (prm/step-4-punch-grout.prm), the Hertz
 // roller (prm/step-4-hertz.prm), three bodies in two contact pairs
 // (prm/step-4-three-beams.prm), a block held by contact alone on a slope
 // (prm/step-4-slope.prm) and kinked responses against a dense reference
@@ -77,6 +77,10 @@ namespace
      "punch held by contact alone, press then push (2 stages, 4 steps)",
      "step-4-punch.prm",
      {}},
+    {"punch-stages-fl2c",
+     "the same, its reduced model solved by FL2C",
+     "step-4-punch.prm",
+     {{"contact solver", "fl2c"}}},
     {"punch-one-stage",
      "punch held by contact alone, press and push together",
      "step-4-punch-one-stage.prm",
