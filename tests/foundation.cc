@@ -801,6 +801,39 @@ TEST(ModalSolver, CutoffFrequencyReturnsEveryModeBelowIt)
   EXPECT_GT(basis.frequencies().back(), 22000.);
 }
 
+// ARPACK out of iterations: a message naming the key, never the
+// unconverged Ritz pairs (deal.II says so by a debug-mode assertion only).
+TEST(ModalSolver, RunningOutOfIterationsNamesTheKey)
+{
+  const Scene     scene = Scene::read(source_dir + "/prm/overlap.prm");
+  const Component component(scene.components[0], scene.plane_model);
+  ModalParameters p;
+  p.n_modes        = 20;
+  p.max_iterations = 1;
+  std::string message;
+  try
+    {
+      ModalSolver(p).solve(component.stiffness_matrix(),
+                           component.mass_matrix(),
+                           "P1");
+    }
+  catch (const dealii::ExceptionBase &e)
+    {
+      message = Input::message_of(e);
+    }
+  EXPECT_NE(message.find("key 'max iterations' of subsection Modal analysis"),
+            std::string::npos)
+    << message;
+  // The default limit converges (and so does an explicit one).
+  p.max_iterations       = 300;
+  const ModalBasis basis = ModalSolver(p).solve(component.stiffness_matrix(),
+                                                component.mass_matrix(),
+                                                "P1");
+  EXPECT_EQ(basis.size(), 20u);
+  for (const double r : basis.residuals)
+    EXPECT_LT(r, 1e-8);
+}
+
 TEST(ModalSolver, SingularStiffnessGivesAClearMessage)
 {
   const Scene     scene = three_zone_scene("");

@@ -41,6 +41,12 @@ namespace FuzzyContact
                       "Spectral shift sigma [(rad/s)^2] of the shift-invert "
                       "transformation; the modes nearest sigma converge "
                       "first. Use a negative value for an unclamped body.");
+    prm.declare_entry("max iterations",
+                      "0",
+                      Patterns::Integer(),
+                      "ARPACK's iterations (restarts of the Lanczos process) "
+                      "at most; 0: the number of DoFs of the component, at "
+                      "least 300.");
     prm.leave_subsection();
   }
 
@@ -60,6 +66,12 @@ namespace FuzzyContact
     tolerance =
       Input::positive(prm.get_double("tolerance"), "Modal analysis: tolerance");
     shift = Input::finite(prm.get_double("shift"), "Modal analysis: shift");
+    const long iterations = prm.get_integer("max iterations");
+    AssertThrow(iterations >= 0 && iterations <= 1000000,
+                ExcMessage("Modal analysis: max iterations must be from 0 "
+                           "(automatic) to 1000000, got " +
+                           std::to_string(iterations) + "."));
+    max_iterations = static_cast<unsigned int>(iterations);
     prm.leave_subsection();
   }
 
@@ -175,14 +187,17 @@ namespace FuzzyContact
 
     std::vector<std::complex<double>> lambda(n_modes);
     std::vector<Vector<double>>       x(n_modes, Vector<double>(n));
-    SolverControl                     control(std::max(n, 300u),
+    const unsigned int           max_iterations = parameters.max_iterations > 0
+                                                    ? parameters.max_iterations
+                                                    : std::max(n, 300u);
+    SolverControl                control(max_iterations,
                           parameters.tolerance,
                           /*log_history=*/false,
                           /*log_result=*/false);
-    ArpackSolver::AdditionalData      data(n_lanczos,
+    ArpackSolver::AdditionalData data(n_lanczos,
                                       ArpackSolver::largest_magnitude,
                                       /*symmetric=*/true);
-    ArpackSolver                      arpack(control, data);
+    ArpackSolver                 arpack(control, data);
     if (parameters.shift != 0)
       arpack.set_shift(parameters.shift);
     try
@@ -193,13 +208,29 @@ namespace FuzzyContact
       {
         std::ostringstream message;
         message << what << ": ARPACK did not converge to " << n_modes
-                << " eigenpairs (tolerance " << parameters.tolerance
-                << "): " << Input::message_of(e);
+                << " eigenpairs (tolerance " << parameters.tolerance << ", "
+                << max_iterations
+                << " iterations at most: key 'max iterations' of subsection "
+                   "Modal analysis): "
+                << Input::message_of(e);
         AssertThrow(false, ExcMessage(message.str()));
       }
     // ARPACK's LAPACK calls (e.g. DLASCL on overflowed values) report
     // illegal arguments through xerbla only.
     LapackErrors::check(what + ": the modal analysis (ARPACK)");
+    // deal.II's ArpackSolver says that ARPACK ran out of iterations only by
+    // a debug-mode assertion (its info = 1); in release mode the unconverged
+    // Ritz pairs would come back as they are. The iterations taken tell.
+    if (control.last_step() >= max_iterations)
+      {
+        std::ostringstream message;
+        message << what << ": ARPACK did not converge to " << n_modes
+                << " eigenpairs (tolerance " << parameters.tolerance << ") in "
+                << max_iterations
+                << " iterations (key 'max iterations' of subsection Modal "
+                   "analysis).";
+        AssertThrow(false, ExcMessage(message.str()));
+      }
 
     std::vector<unsigned int> order(n_modes);
     std::iota(order.begin(), order.end(), 0);

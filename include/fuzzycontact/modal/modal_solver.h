@@ -35,6 +35,11 @@ namespace FuzzyContact
     double tolerance = 1e-12;
     /** Spectral shift sigma [(rad/s)^2]; must be negative for a free body. */
     double shift = 0;
+    /**
+     * ARPACK's iterations (restarts of the Lanczos process) at most; 0:
+     * the number of DoFs, at least 300.
+     */
+    unsigned int max_iterations = 0;
 
     static void
     declare_parameters(ParameterHandler &prm);
