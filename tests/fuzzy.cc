@@ -998,6 +998,7 @@ TEST(IntervalMethods, OptimisationDefaultsOfTheParameterFileAreTheStructs)
 // The fuzzy contact model: reduced pipeline against the exact solver
 // ----------------------------------------------------------------------------
 
+#include <fuzzycontact/output/fuzzy_report.h>
 #include <fuzzycontact/study/fuzzy_contact_model.h>
 
 namespace
@@ -1765,4 +1766,46 @@ end
         EXPECT_GE(b.argmax[0][l][0], t);
         EXPECT_EQ(b.n_infeasible[l] > 0, alpha[l] < 0.6397) << alpha[l];
       }
+}
+
+// A bound short of the Extension Principle's sample by more than the
+// proofs' tolerance is not the optimum, whatever its search said: the
+// report says so in a warning line, and results.json flags it and calls
+// the output not converged. Synthetic results: an upper bound of 1.5 (exact
+// there too) where the reference sampled 2, on a range of 2.
+TEST(FuzzyStudyReport, ABoundShortOfTheReferenceIsAWarning)
+{
+  for (const double sampled : {2.0, 1.5})
+    {
+      FuzzyStudyResults r;
+      r.outputs.resize(1);
+      r.outputs[0].name     = "Fn";
+      r.alpha               = {0.};
+      r.has_reference       = true;
+      r.has_proofs          = true;
+      r.optimisation.bounds = {{Interval{0., 1.5}}};
+      r.reference.bounds    = {{Interval{0., sampled}}};
+      r.proofs.lower        = {{BoundProof{0., 0.}}};
+      r.proofs.upper        = {{BoundProof{1.5, 1.5}}};
+      std::ostringstream out;
+      nlohmann::json     entry;
+      entry["converged"] = true;
+      FuzzyStudyReport::comparison(r, 0, out, entry);
+      const bool short_of = sampled > 1.5;
+      EXPECT_EQ(out.str().find("warning: Fn: 1 bound(s) fall short of the "
+                               "Extension Principle's sampled interval") !=
+                  std::string::npos,
+                short_of)
+        << out.str();
+      EXPECT_EQ(entry["converged"].get<bool>(), !short_of);
+      EXPECT_EQ(entry["reference_comparison"]["short_bounds"].size(),
+                short_of ? 1u : 0u);
+      if (short_of)
+        {
+          EXPECT_DOUBLE_EQ(
+            entry["reference_comparison"]["short_bounds"][0]["short"]
+              .get<double>(),
+            0.25);
+        }
+    }
 }

@@ -278,9 +278,11 @@ namespace FuzzyContact
     {
       if (!r.has_reference || !r.has_proofs)
         return;
-      const double range    = range_of(r, k);
-      double       short_of = 0, missed = 0, unverified = 0;
-      unsigned int n_missed = 0, n_unverified = 0;
+      const double   range    = range_of(r, k);
+      double         short_of = 0, missed = 0, unverified = 0;
+      unsigned int   n_missed = 0, n_unverified = 0;
+      nlohmann::json short_bounds = nlohmann::json::array();
+      std::string    short_levels;
       for (unsigned int l = 0; l < r.alpha.size(); ++l)
         for (const bool upper : {false, true})
           {
@@ -296,8 +298,22 @@ namespace FuzzyContact
                                                   upper,
                                                   range);
             short_of     = std::max(short_of, c.short_of_reference);
-            missed       = std::max(missed, c.reference_missed);
-            unverified   = std::max(unverified, c.outside_not_verified);
+            // The reference's sample is a real point of the box: a bound
+            // short of it by more than the proofs' tolerance is not the
+            // optimum, whatever its search said.
+            if (c.short_of_reference > r.proof_settings.tolerance)
+              {
+                std::ostringstream level;
+                level << std::fixed << std::setprecision(2) << r.alpha[l];
+                short_bounds.push_back({{"alpha", r.alpha[l]},
+                                        {"side", upper ? "upper" : "lower"},
+                                        {"short", c.short_of_reference}});
+                short_levels += std::string(short_levels.empty() ? "" : ", ") +
+                                (upper ? "upper" : "lower") +
+                                " at alpha = " + level.str();
+              }
+            missed     = std::max(missed, c.reference_missed);
+            unverified = std::max(unverified, c.outside_not_verified);
             n_missed += c.reference_missed > 0;
             n_unverified += c.outside_not_verified > 0;
           }
@@ -317,8 +333,19 @@ namespace FuzzyContact
             << "Principle's interval only by the reduction error (the exact "
                "value at the argument does not), by up to "
             << sci(unverified) << "\n";
+      if (!short_bounds.empty())
+        {
+          out << "warning: " << r.outputs[k].name << ": " << short_bounds.size()
+              << " bound(s) fall short of the Extension Principle's sampled "
+                 "interval by more than "
+              << sci(r.proof_settings.tolerance) << " of the range ("
+              << short_levels
+              << "): a better point exists, the search missed it\n";
+          entry["converged"] = false;
+        }
       entry["reference_comparison"] = {{"range", range},
                                        {"short_of_reference", short_of},
+                                       {"short_bounds", short_bounds},
                                        {"reference_missed", missed},
                                        {"n_reference_missed", n_missed},
                                        {"outside_not_verified", unverified},
