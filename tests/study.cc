@@ -952,8 +952,20 @@ TEST(WarmStarts, ANeighboursStatesGiveTheColdAnswer)
       // (FL2C makes at least one sweep and one check per load step
       // either way.)
       if (!fl2c)
-        EXPECT_LT(warm.iterations, cold.iterations);
+        {
+          EXPECT_LT(warm.iterations, cold.iterations);
+        }
       EXPECT_GT(cold.p.linfty_norm(), 0.);
+      // FL2C from a start that passes its test as it is (this point's own
+      // converged states) still makes one sweep and one coarse correction
+      // per load step: a residual within the tolerance is not the exact
+      // answer (on the punch, the free motion was 1e-9 m off).
+      if (fl2c)
+        {
+          workspace.start             = workspace.converged;
+          const ContactSolution again = model.solve(solver);
+          EXPECT_GE(again.iterations, 2 * workspace.start.size());
+        }
     }
 }
 
