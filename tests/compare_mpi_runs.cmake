@@ -22,7 +22,7 @@ string(JSON processes GET "${two}" mpi_processes)
 if(NOT processes EQUAL 2)
   message(FATAL_ERROR "the second run used ${processes} process(es)")
 endif()
-# The bounds agree to round-off (study.cc's MpiRuns.BoundsAgreeToRoundOff):
+# The bounds agree to 1e-6 of each output's range (study.cc's MpiRuns.BoundsAgreeToRoundOff):
 # each evaluation's contact solve starts from its nearest neighbour's state,
 # and the ranks do not see the same neighbours.
 execute_process(
@@ -40,14 +40,25 @@ string(REGEX MATCH "largest difference [^\n]*" agreement "${out}")
 message(STATUS "bounds with 1 and 2 processes: ${agreement}")
 
 # One evaluation cache shared by the ranks: each method evaluates as many
-# distinct points with 2 processes as with one.
+# distinct points with 2 processes as with one (ranks that repeated each
+# other's work would evaluate about twice as many). The optimisation's
+# path follows round-off differences where a bound lies at a kink (above):
+# its count may differ by up to a tenth.
 string(JSON methods LENGTH "${one}" evaluations)
 math(EXPR last "${methods} - 1")
 foreach(m RANGE ${last})
   string(JSON method MEMBER "${one}" evaluations ${m})
   string(JSON a GET "${one}" evaluations ${method})
   string(JSON b GET "${two}" evaluations ${method})
-  if(NOT a EQUAL b)
+  set(allowed 0)
+  if(method STREQUAL "optimisation")
+    math(EXPR allowed "${a} / 10")
+  endif()
+  math(EXPR difference "${a} - ${b}")
+  if(difference LESS 0)
+    math(EXPR difference "0 - ${difference}")
+  endif()
+  if(difference GREATER allowed)
     message(FATAL_ERROR "${method}: ${a} evaluations with 1 process, ${b} with 2")
   endif()
 endforeach()

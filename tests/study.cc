@@ -35,6 +35,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 using namespace FuzzyContact;
@@ -987,10 +988,18 @@ namespace
     for (unsigned int k = 0; k < a["outputs"].size(); ++k)
       {
         const nlohmann::json &x = a["outputs"][k], &y = b["outputs"][k];
-        double                scale = 0;
+        // The output's range (floored at 1e-9 of its magnitude, for an
+        // output the parameters cannot change).
+        double lo = std::numeric_limits<double>::infinity(), hi = -lo,
+               magnitude = 0;
         for (const char *key : {"lower", "upper"})
           for (const double v : x[key].get<std::vector<double>>())
-            scale = std::max(scale, std::abs(v));
+            {
+              lo        = std::min(lo, v);
+              hi        = std::max(hi, v);
+              magnitude = std::max(magnitude, std::abs(v));
+            }
+        const double scale = std::max(hi - lo, 1e-9 * magnitude);
         for (const char *key : {"lower",
                                 "upper",
                                 "vertex_lower",
@@ -1026,11 +1035,14 @@ namespace
 
 // tests/compare_mpi_runs.cmake runs this test on the results.json of a
 // one-process and a two-process step-4 run (FUZZYCONTACT_RESULTS_NP1 and
-// _NP2): their bounds agree to 1e-9 of each output's size. The contact
+// _NP2): their bounds agree to 1e-6 of each output's range. The contact
 // solvers start each evaluation from its nearest neighbour's state
 // (study/warm_starts.h), and the ranks do not see the same neighbours, so
-// the answers agree to round-off and the solvers' tolerances, not bit for
-// bit. Without the variables it checks the comparison itself.
+// the answers agree to round-off, not bit for bit; where a bound lies at a
+// kink the search locates it only to its refinement step (1e-6 of the
+// widths), and a round-off difference can end it elsewhere within that
+// step (the Hertz roller's max_pressure: 2.8e-7 of its range). Without the
+// variables it checks the comparison itself.
 TEST(MpiRuns, BoundsAgreeToRoundOff)
 {
   const char *np1 = std::getenv("FUZZYCONTACT_RESULTS_NP1");
@@ -1045,14 +1057,14 @@ TEST(MpiRuns, BoundsAgreeToRoundOff)
       std::string two = one;
       EXPECT_EQ(largest_bound_difference(one, two, where), 0.);
       two.replace(two.find("[4.0, 3.0]}"), 11, "[4.0, 3.0000001]}");
-      EXPECT_NEAR(largest_bound_difference(one, two, where), 2.5e-8, 1e-15);
+      EXPECT_NEAR(largest_bound_difference(one, two, where), 1e-7 / 3, 1e-15);
       EXPECT_EQ(where.substr(0, 22), "Fn vertex_upper level ");
       return;
     }
   const double worst = largest_bound_difference(Input::read_text_file(np1),
                                                 Input::read_text_file(np2),
                                                 where);
-  EXPECT_LE(worst, 1e-9) << where;
-  std::cout << "largest difference " << worst << " of an output's size ("
+  EXPECT_LE(worst, 1e-6) << where;
+  std::cout << "largest difference " << worst << " of an output's range ("
             << where << ")" << std::endl;
 }

@@ -357,9 +357,10 @@ namespace FuzzyContact
             // neighbouring point's forces that passes the test as it is
             // (a residual within the tolerance is not the exact answer: on
             // the punch its free motion was 1e-9 m off, 4e-4 of u_y's
-            // range): at least one sweep and correction.
+            // range): at least one sweep and correction (where there is a
+            // working set: a zero load leaves none).
             if (residual <= parameters.tolerance &&
-                !(corrected && (joined || it == 1)))
+                !(corrected && (joined || (it == 1 && !working.empty()))))
               {
                 state.iterations = it;
                 break;
