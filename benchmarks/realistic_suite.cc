@@ -23,11 +23,11 @@
 //
 // The scenes: a filleted punch held by contact alone on a foundation
 // (prm/step-4-punch.prm with two load stages, by the exact reduced solver
-// and by FL2C; prm/step-4-punch-one-stage.prm without), a grout zone under it (prm/step-4-punch-grout.prm), the Hertz
-// roller (prm/step-4-hertz.prm), three bodies in two contact pairs
-// (prm/step-4-three-beams.prm), a block held by contact alone on a slope
-// (prm/step-4-slope.prm) and kinked responses against a dense reference
-// (prm/step-4-kinked.prm).
+// and by FL2C; prm/step-4-punch-one-stage.prm without), a grout zone under it
+// (prm/step-4-punch-grout.prm), the Hertz roller (prm/step-4-hertz.prm), three
+// bodies in two contact pairs (prm/step-4-three-beams.prm), a block held by
+// contact alone on a slope (prm/step-4-slope.prm) and kinked responses against
+// a dense reference (prm/step-4-kinked.prm).
 //
 // Usage (from the repository's top folder):
 //   build/realistic_suite [step-4 program, default build/step-4]
