@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <set>
+#include <utility>
 
 namespace FuzzyContact
 {
@@ -80,25 +81,43 @@ namespace FuzzyContact
   }
 
 
+  namespace
+  {
+    // The smallest and the largest finite value among output k's bounds
+    // and the exact values at their arguments (lo > hi if none).
+    std::pair<double, double>
+    extent(const FuzzyOutputBounds &bounds,
+           const BoundProofs       &proofs,
+           const unsigned int       k)
+    {
+      double     lo = std::numeric_limits<double>::infinity(), hi = -lo;
+      const auto take = [&](const double x) {
+        if (std::isfinite(x))
+          {
+            lo = std::min(lo, x);
+            hi = std::max(hi, x);
+          }
+      };
+      for (const Interval &i : bounds.bounds[k])
+        {
+          take(i.lower);
+          take(i.upper);
+        }
+      for (const auto *side : {&proofs.lower, &proofs.upper})
+        if (side->size() > k)
+          for (const BoundProof &p : (*side)[k])
+            take(p.exact);
+      return {lo, hi};
+    }
+  } // namespace
+
+
   double
   proof_range(const FuzzyOutputBounds &bounds,
               const BoundProofs       &proofs,
               const unsigned int       k)
   {
-    double     lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    const auto take = [&](const double x) {
-      lo = std::min(lo, x);
-      hi = std::max(hi, x);
-    };
-    for (const Interval &i : bounds.bounds[k])
-      {
-        take(i.lower);
-        take(i.upper);
-      }
-    for (const auto *side : {&proofs.lower, &proofs.upper})
-      if (side->size() > k)
-        for (const BoundProof &p : (*side)[k])
-          take(p.exact);
+    const auto [lo, hi] = extent(bounds, proofs, k);
     if (!(hi >= lo))
       return 0;
     const double magnitude = std::max(std::abs(lo), std::abs(hi));
@@ -112,21 +131,8 @@ namespace FuzzyContact
                   const BoundProofs       &proofs,
                   const unsigned int       k)
   {
-    double     magnitude = 0;
-    const auto take      = [&](const double x) {
-      if (std::isfinite(x))
-        magnitude = std::max(magnitude, std::abs(x));
-    };
-    for (const Interval &i : bounds.bounds[k])
-      {
-        take(i.lower);
-        take(i.upper);
-      }
-    for (const auto *side : {&proofs.lower, &proofs.upper})
-      if (side->size() > k)
-        for (const BoundProof &p : (*side)[k])
-          take(p.exact);
-    return magnitude;
+    const auto [lo, hi] = extent(bounds, proofs, k);
+    return hi >= lo ? std::max(std::abs(lo), std::abs(hi)) : 0.;
   }
 
 
