@@ -278,7 +278,19 @@ namespace FuzzyContact
     {
       if (!r.has_reference || !r.has_proofs)
         return;
-      const double   range    = range_of(r, k);
+      const double range = range_of(r, k);
+      // A shortfall within the outputs' accuracy (the proofs' floor, of the
+      // output's magnitude) is round-off: an output the parameters cannot
+      // change has a range of round-off only.
+      double magnitude = 0;
+      for (const FuzzyOutputBounds *b : {&r.optimisation, &r.reference})
+        if (b->bounds.size() > k)
+          for (const Interval &i : b->bounds[k])
+            for (const double v : {i.lower, i.upper})
+              if (std::isfinite(v))
+                magnitude = std::max(magnitude, std::abs(v));
+      const double   allowed  = std::max(r.proof_settings.tolerance * range,
+                                      r.proof_settings.accuracy * magnitude);
       double         short_of = 0, missed = 0, unverified = 0;
       unsigned int   n_missed = 0, n_unverified = 0;
       nlohmann::json short_bounds = nlohmann::json::array();
@@ -301,7 +313,7 @@ namespace FuzzyContact
             // The reference's sample is a real point of the box: a bound
             // short of it by more than the proofs' tolerance is not the
             // optimum, whatever its search said.
-            if (c.short_of_reference > r.proof_settings.tolerance)
+            if (c.short_of_reference * range > allowed)
               {
                 std::ostringstream level;
                 level << std::fixed << std::setprecision(2) << r.alpha[l];
@@ -338,7 +350,8 @@ namespace FuzzyContact
           out << "warning: " << r.outputs[k].name << ": " << short_bounds.size()
               << " bound(s) fall short of the Extension Principle's sampled "
                  "interval by more than "
-              << sci(r.proof_settings.tolerance) << " of the range ("
+              << sci(r.proof_settings.tolerance) << " of the range and "
+              << sci(r.proof_settings.accuracy) << " of the magnitude ("
               << short_levels
               << "): a better point exists, the search missed it\n";
           entry["converged"] = false;
