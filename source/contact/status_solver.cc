@@ -1,3 +1,4 @@
+#include <fuzzycontact/base/lapack_extras.h>
 #include <fuzzycontact/contact/status_solver.h>
 #include <fuzzycontact/contact/status_system.h>
 
@@ -11,19 +12,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-
-// LAPACK's condition estimate of an LU factorisation (not wrapped by
-// deal.II).
-extern "C" void
-dgecon_(const char                    *norm,
-        const dealii::types::blas_int *n,
-        const double                  *a,
-        const dealii::types::blas_int *lda,
-        const double                  *anorm,
-        double                        *rcond,
-        double                        *work,
-        dealii::types::blas_int       *iwork,
-        dealii::types::blas_int       *info);
 
 namespace FuzzyContact
 {

@@ -1,4 +1,5 @@
 #include <fuzzycontact/base/lapack_errors.h>
+#include <fuzzycontact/base/lapack_extras.h>
 #include <fuzzycontact/reduction/reduced_component.h>
 
 #include <deal.II/base/exceptions.h>
@@ -7,21 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
-
-extern "C"
-{
-  // LAPACK's pivoted Cholesky factorisation (not wrapped by deal.II).
-  void
-  dpstrf_(const char                    *uplo,
-          const dealii::types::blas_int *n,
-          double                        *a,
-          const dealii::types::blas_int *lda,
-          dealii::types::blas_int       *piv,
-          dealii::types::blas_int       *rank,
-          const double                  *tol,
-          double                        *work,
-          dealii::types::blas_int       *info);
-}
 
 namespace FuzzyContact
 {

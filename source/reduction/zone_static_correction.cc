@@ -1,4 +1,5 @@
 #include <fuzzycontact/base/lapack_errors.h>
+#include <fuzzycontact/base/lapack_extras.h>
 #include <fuzzycontact/base/timer_section.h>
 #include <fuzzycontact/reduction/zone_static_correction.h>
 
@@ -10,21 +11,6 @@
 #include <iomanip>
 #include <random>
 #include <sstream>
-
-extern "C"
-{
-  // LAPACK's pivoted Cholesky factorisation (not wrapped by deal.II).
-  void
-  dpstrf_(const char                    *uplo,
-          const dealii::types::blas_int *n,
-          double                        *a,
-          const dealii::types::blas_int *lda,
-          dealii::types::blas_int       *piv,
-          dealii::types::blas_int       *rank,
-          const double                  *tol,
-          double                        *work,
-          dealii::types::blas_int       *info);
-}
 
 namespace FuzzyContact
 {
