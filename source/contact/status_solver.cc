@@ -236,6 +236,18 @@ namespace FuzzyContact
       FullMatrix<double>     S_inverse;
     };
 
+  } // namespace
+
+  // The GMRES solves of one StatusSolver, on one SolverControl and one
+  // deal.II SolverGMRES kept from solve to solve (making them costs as much
+  // as a few GMRES steps on these small systems).
+  struct StatusSolver::Krylov
+  {
+    SolverControl               control{gmres_max_steps, 0., false, false};
+    SolverGMRES<Vector<double>> solver{
+      control,
+      SolverGMRES<Vector<double>>::AdditionalData(gmres_max_steps + 2, true)};
+
     // GMRES on the system @p A of size N, preconditioned by @p P, from
     // zero; false if it does not reach the tolerance in the steps allowed.
     template <class Preconditioner>
@@ -246,16 +258,8 @@ namespace FuzzyContact
           Vector<double>            &x,
           StatusSolver::Counts      &counts)
     {
-      const DenseOperator         operator_A(A, b.size());
-      SolverControl               control(StatusSolver::gmres_max_steps,
-                            StatusSolver::gmres_tolerance * b.l2_norm(),
-                            false,
-                            false);
-      SolverGMRES<Vector<double>> solver(
-        control,
-        SolverGMRES<Vector<double>>::AdditionalData(
-          StatusSolver::gmres_max_steps + 2,
-          true));
+      const DenseOperator operator_A(A, b.size());
+      control.set_tolerance(StatusSolver::gmres_tolerance * b.l2_norm());
       x.reinit(b.size());
       ++counts.gmres;
       try
@@ -270,7 +274,27 @@ namespace FuzzyContact
       counts.gmres_steps += control.last_step();
       return true;
     }
+  };
+
+  namespace
+  {
   } // namespace
+
+
+  StatusSolver::StatusSolver()                         = default;
+  StatusSolver::~StatusSolver()                        = default;
+  StatusSolver::StatusSolver(StatusSolver &&) noexcept = default;
+  StatusSolver &
+  StatusSolver::operator=(StatusSolver &&) noexcept = default;
+
+
+  StatusSolver::Krylov &
+  StatusSolver::krylov()
+  {
+    if (!krylov_)
+      krylov_ = std::make_unique<Krylov>();
+    return *krylov_;
+  }
 
 
   void
@@ -347,7 +371,7 @@ namespace FuzzyContact
             for (unsigned int c = 0; c < m; ++c)
               A[std::size_t(m + j) * N + c] = A[std::size_t(c) * N + m + j] =
                 scale * rigid->gaps(rows[c], j);
-          if (!gmres(A, P, y, z, counts_))
+          if (!krylov().gmres(A, P, y, z, counts_))
             return false;
         }
       x.reinit(N);
@@ -412,6 +436,16 @@ namespace FuzzyContact
         LUPreconditioner(lu, pivots).vmult(x, b);
         return true;
       }
+    // Rows whose equation changed its kind (a node turned from sticking to
+    // slipping, or back, or its slip reversed): GMRES needs about one step
+    // per such row, so many of them go to a new factorisation at once,
+    // without GMRES steps spent first. (Another friction coefficient or W
+    // changes every row a little: GMRES takes few steps for that.)
+    unsigned int changed_rows = 0;
+    if (kept)
+      for (unsigned int i = 0; i + 1 < key.size(); ++i)
+        changed_rows += std::isinf(key[i]) != std::isinf(lu_key[i]) ||
+                        (key[i] < 0) != (lu_key[i] < 0);
     std::vector<double> &A = matrix;
     gather(W, unknowns, status, sign, mu, rigid, scale, A);
     // Other statuses of a few nodes, another W or other friction
@@ -421,7 +455,8 @@ namespace FuzzyContact
     // close to them again).
     const unsigned long steps_before = counts_.gmres_steps;
     const bool          answered =
-      kept && gmres(A, LUPreconditioner(lu, pivots), b, x, counts_);
+      kept && changed_rows <= gmres_max_steps - 2 &&
+      krylov().gmres(A, LUPreconditioner(lu, pivots), b, x, counts_);
     if (answered && counts_.gmres_steps - steps_before <= gmres_refresh_steps)
       return true;
     // A new factorisation, kept.

@@ -30,7 +30,9 @@
 //    in about as many steps as rows changed. So do they when W changed (a
 //    neighbouring point of a study) or the friction coefficients did. A
 //    node that opens or closes changes the unknowns: a new factorisation;
-//    so does GMRES not converging within gmres_max_steps;
+//    so does GMRES not converging within gmres_max_steps, and so do more
+//    rows changed than GMRES would converge in (without steps spent first).
+//    GMRES is deal.II's, its solver object kept from solve to solve;
 //  - a system LAPACK's condition estimate calls singular is solved by
 //    StatusSystem's pseudo-inverse (least squares, minimum norm).
 // Every path solves the same equations to round-off (GMRES to a residual
@@ -46,6 +48,7 @@
 #include <deal.II/lac/lapack_support.h>
 #include <deal.II/lac/vector.h>
 
+#include <memory>
 #include <vector>
 
 namespace FuzzyContact
@@ -53,6 +56,12 @@ namespace FuzzyContact
   class StatusSolver
   {
   public:
+    StatusSolver();
+    ~StatusSolver();
+    StatusSolver(StatusSolver &&) noexcept;
+    StatusSolver &
+    operator=(StatusSolver &&) noexcept;
+
     /**
      * The forces @p p (2 per node) and the free motions' amplitudes @p a
      * for the statuses (@p status, @p sign, coefficients @p mu) such that
@@ -153,6 +162,11 @@ namespace FuzzyContact
     // The last system with friction assembled (kept to save its memory).
     std::vector<double> matrix;
     Counts              counts_;
+    // GMRES, made at its first use and kept.
+    struct Krylov;
+    std::unique_ptr<Krylov> krylov_;
+    Krylov &
+    krylov();
   };
 } // namespace FuzzyContact
 
