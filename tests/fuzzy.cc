@@ -1768,6 +1768,28 @@ end
       }
 }
 
+namespace
+{
+  // The results of one output "Fn" at alpha = 0: its bounds, proven exact
+  // there, and the Extension Principle's interval.
+  FuzzyStudyResults
+  one_output_results(const Interval &bounds, const Interval &reference)
+  {
+    FuzzyStudyResults r;
+    r.outputs.resize(1);
+    r.outputs[0].name         = "Fn";
+    r.alpha                   = {0.};
+    r.has_reference           = true;
+    r.has_proofs              = true;
+    r.proof_settings.accuracy = 1e-7;
+    r.optimisation.bounds     = {{bounds}};
+    r.reference.bounds        = {{reference}};
+    r.proofs.lower            = {{BoundProof{bounds.lower, bounds.lower}}};
+    r.proofs.upper            = {{BoundProof{bounds.upper, bounds.upper}}};
+    return r;
+  }
+} // namespace
+
 // A bound short of the Extension Principle's sample by more than the
 // proofs' tolerance is not the optimum, whatever its search said: the
 // report says so in a warning line, and results.json flags it and calls
@@ -1777,17 +1799,8 @@ TEST(FuzzyStudyReport, ABoundShortOfTheReferenceIsAWarning)
 {
   for (const double sampled : {2.0, 1.5})
     {
-      FuzzyStudyResults r;
-      r.outputs.resize(1);
-      r.outputs[0].name         = "Fn";
-      r.alpha                   = {0.};
-      r.has_reference           = true;
-      r.has_proofs              = true;
-      r.optimisation.bounds     = {{Interval{0., 1.5}}};
-      r.reference.bounds        = {{Interval{0., sampled}}};
-      r.proofs.lower            = {{BoundProof{0., 0.}}};
-      r.proofs.upper            = {{BoundProof{1.5, 1.5}}};
-      r.proof_settings.accuracy = 1e-7;
+      FuzzyStudyResults r =
+        one_output_results(Interval{0., 1.5}, Interval{0., sampled});
       std::ostringstream out;
       nlohmann::json     entry;
       entry["converged"] = true;
@@ -1812,17 +1825,8 @@ TEST(FuzzyStudyReport, ABoundShortOfTheReferenceIsAWarning)
   // A crisp output (a total force statics fixes: its range is round-off):
   // short of the sample by 2e-9 of its range of 4e-9, within 1e-7 of its
   // magnitude, is no warning.
-  FuzzyStudyResults r;
-  r.outputs.resize(1);
-  r.outputs[0].name         = "Fn";
-  r.alpha                   = {0.};
-  r.has_reference           = true;
-  r.has_proofs              = true;
-  r.proof_settings.accuracy = 1e-7;
-  r.optimisation.bounds     = {{Interval{1e5, 1e5 + 2e-9}}};
-  r.reference.bounds        = {{Interval{1e5, 1e5 + 4e-9}}};
-  r.proofs.lower            = {{BoundProof{1e5, 1e5}}};
-  r.proofs.upper            = {{BoundProof{1e5 + 2e-9, 1e5 + 2e-9}}};
+  FuzzyStudyResults r =
+    one_output_results(Interval{1e5, 1e5 + 2e-9}, Interval{1e5, 1e5 + 4e-9});
   std::ostringstream out;
   nlohmann::json     entry;
   FuzzyStudyReport::comparison(r, 0, out, entry);
