@@ -894,9 +894,9 @@ TEST(ClosedSetFactor, UpdatesSolveLikeANewFactorisation)
 // StatusSolver against the dense StatusSystem (the plain LU of the whole
 // system, an independent construction of the same equations) over a
 // sequence of solves that takes every path: a new LU, the same system
-// again, a few nodes turning from sticking to slipping (the kept LU
-// preconditions GMRES), another W (a neighbouring point), other friction
-// coefficients, the frictionless system on the Cholesky factor with row
+// again, a few nodes turning from sticking to slipping (rows replaced in
+// the kept LU), another W (a neighbouring point: the kept LU preconditions
+// GMRES), other friction coefficients, the frictionless system on the Cholesky factor with row
 // updates, and free rigid-body motions. Forces and amplitudes agree to
 // 1e-9 of their size.
 TEST(StatusSolver, EveryPathSolvesTheStatusSystem)
@@ -994,6 +994,7 @@ TEST(StatusSolver, EveryPathSolvesTheStatusSystem)
   const StatusSolver::Counts &counts = solver.counts();
   EXPECT_GT(counts.gmres, 0u);
   EXPECT_GT(counts.lu, 0u);
+  EXPECT_GT(counts.row_updates, 0u);
   EXPECT_EQ(counts.pseudo_inverse, 0u);
   EXPECT_GT(solver.factor().n_inserts + solver.factor().n_erases, 0u);
 }

@@ -4,6 +4,7 @@
 
 #include <fuzzycontact/base/input.h>
 #include <fuzzycontact/base/progress.h>
+#include <fuzzycontact/base/row_updated_lu.h>
 #include <fuzzycontact/base/sparse_cholesky.h>
 #include <fuzzycontact/base/sparse_direct_solver.h>
 #include <fuzzycontact/contact/active_set_solver.h>
@@ -912,6 +913,77 @@ TEST(SparseCholesky, TrailingBlockIsTheInverseRestrictedToTheLastDofs)
   lu.solve(v);
   v -= u;
   EXPECT_LT(v.linfty_norm(), 1e-8 * u.linfty_norm());
+}
+
+// RowUpdatedLU against a new LAPACK factorisation of the matrix with its
+// rows replaced (an independent solve): the Woodbury update must solve it
+// to round-off, whether the rows are new, asked before (their columns
+// kept) or none; a replacement that makes the matrix singular is refused.
+TEST(RowUpdatedLU, SolvesLikeAFactorisationOfTheReplacedMatrix)
+{
+  const unsigned int N = 60;
+  std::vector<double> A0(N * N), A1(N * N);
+  // A non-symmetric matrix with a dominant diagonal, and another one whose
+  // rows replace some of it (as a tangential equation replaces a row of W).
+  for (unsigned int j = 0; j < N; ++j)
+    for (unsigned int i = 0; i < N; ++i)
+      {
+        A0[j * N + i] = std::sin(1. + i + 7. * j) + (i == j ? N : 0.);
+        A1[j * N + i] = std::cos(2. + 3. * i + j) + (i == j ? 2. : 0.);
+      }
+  dealii::Vector<double> b(N);
+  for (unsigned int i = 0; i < N; ++i)
+    b[i] = 1. + std::sin(0.3 * i);
+  // The matrix A0 with rows R from A1, solved by LAPACK afresh.
+  const auto reference = [&](const std::vector<unsigned int> &R) {
+    dealii::LAPACKFullMatrix<double> M(N, N);
+    for (unsigned int i = 0; i < N; ++i)
+      for (unsigned int j = 0; j < N; ++j)
+        M(i, j) = A0[j * N + i];
+    for (const unsigned int i : R)
+      for (unsigned int j = 0; j < N; ++j)
+        M(i, j) = A1[j * N + i];
+    M.compute_lu_factorization();
+    dealii::Vector<double> x = b;
+    M.solve(x);
+    return x;
+  };
+
+  RowUpdatedLU lu;
+  ASSERT_TRUE(lu.factorise(A0, N, 1e-13));
+  dealii::Vector<double> x(N);
+  for (const std::vector<unsigned int> &R :
+       {std::vector<unsigned int>{3, 17, 41},
+        std::vector<unsigned int>{17, 5, 59, 0}, // 17 asked before
+        std::vector<unsigned int>{},
+        std::vector<unsigned int>{41}})
+    {
+      ASSERT_TRUE(lu.replace_rows(A1, R));
+      EXPECT_EQ(lu.replaced_rows(), R);
+      lu.vmult(x, b);
+      dealii::Vector<double> error = reference(R);
+      error -= x;
+      EXPECT_LT(error.linfty_norm(), 1e-12 * x.linfty_norm())
+        << R.size() << " rows replaced";
+    }
+  // One back-substitution per row ever asked: 3, 17, 41, 5, 59, 0.
+  EXPECT_EQ(lu.n_cached_columns(), 6u);
+
+  // Row 8 replaced by row 9 of A0 itself: singular, refused, and the
+  // factors solve A0 again.
+  std::vector<double> twin = A0;
+  for (unsigned int j = 0; j < N; ++j)
+    twin[j * N + 8] = A0[j * N + 9];
+  EXPECT_FALSE(lu.replace_rows(twin, {8}));
+  EXPECT_TRUE(lu.replaced_rows().empty());
+  lu.vmult(x, b);
+  dealii::Vector<double> error = reference({});
+  error -= x;
+  EXPECT_LT(error.linfty_norm(), 1e-12 * x.linfty_norm());
+  // And a singular matrix is not factorised.
+  RowUpdatedLU singular;
+  EXPECT_FALSE(singular.factorise(twin, N, 1e-13));
+  EXPECT_TRUE(singular.empty());
 }
 
 // A body refactorised at new zone moduli keeps its pattern: the second

@@ -112,39 +112,6 @@ namespace FuzzyContact
       const unsigned int         N;
     };
 
-    // Dense LU factors as a preconditioner (or an exact solver).
-    class LUPreconditioner
-    {
-    public:
-      LUPreconditioner(const std::vector<double>          &lu,
-                       const std::vector<types::blas_int> &pivots)
-          : lu(lu)
-          , pivots(pivots)
-      {
-      }
-      void
-      vmult(Vector<double> &dst, const Vector<double> &src) const
-      {
-        dst                     = src;
-        const types::blas_int n = pivots.size(), one = 1;
-        types::blas_int       info = 0;
-        getrs("N",
-              &n,
-              &one,
-              lu.data(),
-              &n,
-              pivots.data(),
-              dst.data(),
-              &n,
-              &info);
-        Assert(info == 0, ExcInternalError());
-      }
-
-    private:
-      const std::vector<double>          &lu;
-      const std::vector<types::blas_int> &pivots;
-    };
-
     // The symmetric system P = [W_BB, G'_B; G'_B^T, 0] (G' = scale G) by
     // block elimination on the Cholesky factor: with Y = W_BB^{-1} G'_B and
     // the Schur complement S = G'_B^T Y, a = S^+ (Y^T u - v) and x =
@@ -248,19 +215,36 @@ namespace FuzzyContact
       control,
       SolverGMRES<Vector<double>>::AdditionalData(gmres_max_steps + 2, true)};
 
-    // GMRES on the system @p A of size N, preconditioned by @p P, from
-    // zero; false if it does not reach the tolerance in the steps allowed.
+    // The system @p A of size N solved by its preconditioner @p P (exact
+    // where P is A's inverse: then the residual, one product with A, says
+    // so) or else by GMRES from there; false if GMRES does not reach the
+    // tolerance in the steps allowed.
     template <class Preconditioner>
     bool
-    gmres(const std::vector<double> &A,
+    solve(const std::vector<double> &A,
           const Preconditioner      &P,
           const Vector<double>      &b,
           Vector<double>            &x,
           StatusSolver::Counts      &counts)
     {
       const DenseOperator operator_A(A, b.size());
-      control.set_tolerance(StatusSolver::gmres_tolerance * b.l2_norm());
+      const double tolerance = StatusSolver::gmres_tolerance * b.l2_norm();
       x.reinit(b.size());
+      P.vmult(x, b);
+      residual.reinit(b.size(), true);
+      operator_A.vmult(residual, x);
+      residual.sadd(-1., b);
+      const double reduction = residual.l2_norm() / b.l2_norm();
+      if (!(reduction > StatusSolver::gmres_tolerance))
+        return true;
+      // P far from A's inverse (a point far from the factorised one):
+      // GMRES, which reduces the residual by about as much per step as P
+      // did, or faster, would take more than twice the steps after which
+      // the factors are made anew anyway; none.
+      if (std::pow(reduction, 2 * StatusSolver::gmres_refresh_steps) >
+          StatusSolver::gmres_tolerance)
+        return false;
+      control.set_tolerance(tolerance);
       ++counts.gmres;
       try
         {
@@ -274,12 +258,8 @@ namespace FuzzyContact
       counts.gmres_steps += control.last_step();
       return true;
     }
+    Vector<double> residual;
   };
-
-  namespace
-  {
-  } // namespace
-
 
   StatusSolver::StatusSolver()                         = default;
   StatusSolver::~StatusSolver()                        = default;
@@ -303,8 +283,7 @@ namespace FuzzyContact
     factor_.clear();
     lu_unknowns = Unknowns();
     lu_key.clear();
-    lu.clear();
-    pivots.clear();
+    factors.clear();
   }
 
 
@@ -371,7 +350,7 @@ namespace FuzzyContact
             for (unsigned int c = 0; c < m; ++c)
               A[std::size_t(m + j) * N + c] = A[std::size_t(c) * N + m + j] =
                 scale * rigid->gaps(rows[c], j);
-          if (!krylov().gmres(A, P, y, z, counts_))
+          if (!krylov().solve(A, P, y, z, counts_))
             return false;
         }
       x.reinit(N);
@@ -430,79 +409,50 @@ namespace FuzzyContact
                       ? std::numeric_limits<double>::infinity()
                       : mu[k] * sign[k]);
     key.push_back(scale);
-    const bool kept = !lu.empty() && unknowns == lu_unknowns;
-    if (kept && key == lu_key && lu_state == W.state())
+    const bool kept   = !factors.empty() && unknowns == lu_unknowns;
+    const bool same_W = kept && lu_state == W.state();
+    if (same_W && key == lu_key)
       {
-        LUPreconditioner(lu, pivots).vmult(x, b);
+        factors.replace_rows(matrix, {});
+        factors.vmult(x, b);
         return true;
       }
-    // Rows whose equation changed its kind (a node turned from sticking to
-    // slipping, or back, or its slip reversed): GMRES needs about one step
-    // per such row, so many of them go to a new factorisation at once,
-    // without GMRES steps spent first. (Another friction coefficient or W
-    // changes every row a little: GMRES takes few steps for that.)
-    unsigned int changed_rows = 0;
+    // The rows whose equation is not the factorised one: a node turned
+    // from sticking to slipping, or back, or its slip reversed; at the same
+    // W also a slipping node's other friction coefficient. The kept factors
+    // take them by a row update (RowUpdatedLU), exactly; what else changed
+    // (another W, friction coefficients at another W: every row a little)
+    // is left to GMRES, preconditioned by the updated factors.
+    std::vector<unsigned int> changed;
     if (kept)
       for (unsigned int i = 0; i + 1 < key.size(); ++i)
-        changed_rows += std::isinf(key[i]) != std::isinf(lu_key[i]) ||
-                        (key[i] < 0) != (lu_key[i] < 0);
+        if (std::isinf(key[i]) != std::isinf(lu_key[i]) ||
+            (key[i] < 0) != (lu_key[i] < 0) || (same_W && key[i] != lu_key[i]))
+          changed.push_back(2 * i + 1);
     std::vector<double> &A = matrix;
     gather(W, unknowns, status, sign, mu, rigid, scale, A);
-    // Other statuses of a few nodes, another W or other friction
-    // coefficients: the kept factors precondition GMRES. If that took more
-    // than a few steps, the factors are made anew for this system (the
-    // next solve, at a neighbouring point or the next iteration, is then
-    // close to them again).
+    // If GMRES took more than a few steps, or too many rows changed, the
+    // factors are made anew for this system (the next solve, at a
+    // neighbouring point or the next iteration, is then close to them
+    // again).
     const unsigned long steps_before = counts_.gmres_steps;
     const bool          answered =
-      kept && changed_rows <= gmres_max_steps - 2 &&
-      krylov().gmres(A, LUPreconditioner(lu, pivots), b, x, counts_);
+      kept && changed.size() <= max_replaced_rows(unknowns.size()) &&
+      factors.replace_rows(A, changed) &&
+      krylov().solve(A, factors, b, x, counts_);
+    counts_.row_updates += answered && !changed.empty();
     if (answered && counts_.gmres_steps - steps_before <= gmres_refresh_steps)
       return true;
-    // A new factorisation, kept.
+    // A new factorisation, kept (none if LAPACK's condition estimate calls
+    // the system singular).
     ++counts_.lu;
-    const types::blas_int N     = unknowns.size();
-    double                norm1 = 0;
-    for (types::blas_int j = 0; j < N; ++j)
-      {
-        double column = 0;
-        for (types::blas_int i = 0; i < N; ++i)
-          column += std::abs(A[std::size_t(j) * N + i]);
-        norm1 = std::max(norm1, column);
-      }
-    lu = A;
-    pivots.resize(N);
-    types::blas_int info = 0;
-    getrf(&N, &N, lu.data(), &N, pivots.data(), &info);
-    double rcond = 0;
-    if (info == 0)
-      {
-        std::vector<double>          work(4 * N);
-        std::vector<types::blas_int> iwork(N);
-        const char                   norm = '1';
-        dgecon_(&norm,
-                &N,
-                lu.data(),
-                &N,
-                &norm1,
-                &rcond,
-                work.data(),
-                iwork.data(),
-                &info);
-      }
-    if (!(rcond > 1e-13))
-      {
-        lu.clear();
-        return answered;
-      }
+    if (!factors.factorise(A, unknowns.size(), 1e-13))
+      return answered;
     lu_unknowns = unknowns;
     lu_key      = key;
     lu_state    = W.state();
     if (!answered)
-      {
-        x.reinit(b.size());
-        LUPreconditioner(lu, pivots).vmult(x, b);
-      }
+      factors.vmult(x, b);
     return true;
   }
 

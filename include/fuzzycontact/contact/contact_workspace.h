@@ -49,13 +49,7 @@ namespace FuzzyContact
     {
       StatusSolver::Counts sum;
       for (const StatusSolver &s : solvers)
-        {
-          sum.solves += s.counts().solves;
-          sum.pseudo_inverse += s.counts().pseudo_inverse;
-          sum.lu += s.counts().lu;
-          sum.gmres += s.counts().gmres;
-          sum.gmres_steps += s.counts().gmres_steps;
-        }
+        sum += s.counts();
       return sum;
     }
     /** Forgets every factor. */

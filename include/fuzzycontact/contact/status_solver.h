@@ -25,14 +25,18 @@
 //    p_n) = 0 if it slips. The system is not symmetric; it is factorised
 //    densely (LAPACK's LU with partial pivoting, from W's contiguous
 //    columns) and the factors are kept. A node that turns from sticking to
-//    slipping, or back, replaces one row: the kept factors then precondition
-//    GMRES (deal.II's SolverGMRES, right preconditioning), which converges
-//    in about as many steps as rows changed. So do they when W changed (a
-//    neighbouring point of a study) or the friction coefficients did. A
-//    node that opens or closes changes the unknowns: a new factorisation;
-//    so does GMRES not converging within gmres_max_steps, and so do more
-//    rows changed than GMRES would converge in (without steps spent first).
-//    GMRES is deal.II's, its solver object kept from solve to solve;
+//    slipping, or back, replaces one row: the kept factors take it by a
+//    row update (RowUpdatedLU: the Sherman-Morrison-Woodbury formula, one
+//    back-substitution per row ever changed, kept), exact, so the next
+//    solve of the same W costs a back-substitution and O(r N) for r rows
+//    replaced. Where W changed (a neighbouring point of a study) or the
+//    friction coefficients did, every row changes a little: the updated
+//    factors then precondition GMRES (deal.II's SolverGMRES, right
+//    preconditioning, its solver object kept from solve to solve), which
+//    converges in a few steps. A node that opens or closes changes the
+//    unknowns: a new factorisation; so does GMRES taking more than
+//    gmres_refresh_steps (or not converging within gmres_max_steps), and
+//    so do more rows replaced than max_replaced_rows();
 //  - a system LAPACK's condition estimate calls singular is solved by
 //    StatusSystem's pseudo-inverse (least squares, minimum norm).
 // Every path solves the same equations to round-off (GMRES to a residual
@@ -42,12 +46,14 @@
 #ifndef fuzzycontact_contact_status_solver_h
 #define fuzzycontact_contact_status_solver_h
 
+#include <fuzzycontact/base/row_updated_lu.h>
 #include <fuzzycontact/contact/closed_set_factor.h>
 #include <fuzzycontact/contact/contact_problem.h>
 
 #include <deal.II/lac/lapack_support.h>
 #include <deal.II/lac/vector.h>
 
+#include <algorithm>
 #include <memory>
 #include <vector>
 
@@ -89,8 +95,20 @@ namespace FuzzyContact
     {
       /** Solves, of them by the pseudo-inverse. */
       unsigned long solves = 0, pseudo_inverse = 0;
-      /** Dense LU factorisations; GMRES solves and their steps. */
-      unsigned long lu = 0, gmres = 0, gmres_steps = 0;
+      /** Dense LU factorisations; GMRES solves and their steps; solves
+       * on factors with rows replaced. */
+      unsigned long lu = 0, gmres = 0, gmres_steps = 0, row_updates = 0;
+      Counts &
+      operator+=(const Counts &other)
+      {
+        solves += other.solves;
+        pseudo_inverse += other.pseudo_inverse;
+        lu += other.lu;
+        gmres += other.gmres;
+        gmres_steps += other.gmres_steps;
+        row_updates += other.row_updates;
+        return *this;
+      }
     };
     const Counts &
     counts() const;
@@ -102,9 +120,18 @@ namespace FuzzyContact
      * right-hand side, or gives up (a new factorisation) after so many
      * steps. */
     static constexpr double       gmres_tolerance = 1e-13;
-    static constexpr unsigned int gmres_max_steps = 12;
+    static constexpr unsigned int gmres_max_steps = 8;
     /** A GMRES solve of more steps has the factors made anew after it. */
     static constexpr unsigned int gmres_refresh_steps = 4;
+    /** At most so many rows of a system of N unknowns are replaced in the
+     * kept factors; more make new factors (N / 8: each row replaced costs
+     * a back-substitution, O(N^2), once, and O(N) per solve; the new
+     * factorisation O(N^3)). */
+    static unsigned int
+    max_replaced_rows(const unsigned int N)
+    {
+      return std::max(8u, N / 8);
+    }
 
     /**
      * The unknowns of the system with friction: the closed nodes (both
@@ -151,14 +178,14 @@ namespace FuzzyContact
                   Vector<double>                   &x);
 
     ClosedSetFactor factor_;
-    // The dense LU factors of the system with friction of lu_unknowns; the
-    // equations they are exact for (lu_key: statuses, friction
-    // coefficients and scale) and W's state.
-    Unknowns                     lu_unknowns;
-    std::vector<double>          lu_key;
-    unsigned long                lu_state = 0;
-    std::vector<double>          lu;
-    std::vector<types::blas_int> pivots;
+    // The dense LU factors of the system with friction of lu_unknowns (its
+    // rows replaced as the statuses change); the equations they were made
+    // for (lu_key: statuses, friction coefficients and scale) and W's
+    // state.
+    Unknowns            lu_unknowns;
+    std::vector<double> lu_key;
+    unsigned long       lu_state = 0;
+    RowUpdatedLU        factors;
     // The last system with friction assembled (kept to save its memory).
     std::vector<double> matrix;
     Counts              counts_;
