@@ -48,7 +48,9 @@
 // contact holds it, so phase 1 is replaced by the start "every node
 // closed" (the primal-dual iterations then open the nodes in tension); and
 // a load that no contact forces in the friction cones can balance is
-// refused before any iteration (check_equilibrium()).
+// refused with that reason (check_equilibrium()) when the iterations fail
+// (a converged state balances the load within the cones: the test is not
+// repeated before every solve).
 
 #ifndef fuzzycontact_contact_active_set_solver_h
 #define fuzzycontact_contact_active_set_solver_h

@@ -61,7 +61,8 @@
 // residual is measured per motion relative to sum_j |G_j p_j| + |lambda
 // e|. A load no admissible contact forces can balance (p_n >= 0, |p_t| <=
 // mu p_n: a block on a slope steeper than its friction angle) has no
-// static solution; check_equilibrium() says so before a solver tries.
+// static solution; check_equilibrium() says so (the exact solver calls it
+// when its iterations fail).
 
 #ifndef fuzzycontact_contact_contact_problem_h
 #define fuzzycontact_contact_contact_problem_h
