@@ -1,9 +1,65 @@
+#include <fuzzycontact/base/limits.h>
 #include <fuzzycontact/fuzzy/extension_principle.h>
 
 #include <deal.II/base/exceptions.h>
 
+#include <cmath>
+#include <string>
+
 namespace FuzzyContact
 {
+  void
+  ExtensionPrincipleSettings::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Extension principle");
+    prm.declare_entry("points per dimension",
+                      "4",
+                      Patterns::Integer(2, 100),
+                      "Every alpha level's box is sampled on a grid of "
+                      "this many equally spaced values per parameter "
+                      "(both ends included).");
+    prm.declare_entry("reuse factorisations",
+                      "true",
+                      Patterns::Bool(),
+                      "false: every sample is an independent full-order "
+                      "analysis (new factorisations, refined displacement "
+                      "fields), the cost of a study without reduced "
+                      "models. true: keep the nominal factorisations and "
+                      "contact flexibility columns and reuse them where "
+                      "exact (stiffness a multiple of the nominal one): "
+                      "the same answers to about 1e-9, much cheaper.");
+    prm.leave_subsection();
+  }
+
+
+  void
+  ExtensionPrincipleSettings::check_size(const unsigned int n_alpha,
+                                         const unsigned int n_parameters) const
+  {
+    Input::in_range(n_alpha *
+                      std::pow(1.0 * points_per_dimension, n_parameters),
+                    0,
+                    1e5,
+                    "Extension principle: points per dimension = " +
+                      std::to_string(points_per_dimension) + " with " +
+                      std::to_string(n_parameters) + " fuzzy parameters and " +
+                      std::to_string(n_alpha) +
+                      " alpha levels: the exact solves (about number of "
+                      "alpha levels x points per dimension ^ parameters)",
+                    "lower one of these keys");
+  }
+
+
+  void
+  ExtensionPrincipleSettings::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Extension principle");
+    points_per_dimension = prm.get_integer("points per dimension");
+    reuse_factorisations = prm.get_bool("reuse factorisations");
+    prm.leave_subsection();
+  }
+
+
   ExtensionPrinciple::ExtensionPrinciple(
     const unsigned int points_per_dimension)
       : points_per_dimension_(points_per_dimension)

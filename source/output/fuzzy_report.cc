@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <iostream>
 #include <limits>
 #include <sstream>
 
@@ -253,6 +254,32 @@ namespace FuzzyContact
   } // namespace
 
 
+  void
+  FuzzyStudyResults::set_model(const FuzzyContactModel &model,
+                               const double             offline_time)
+  {
+    this->offline_time = offline_time;
+    n_dofs             = model.n_dofs();
+    for (unsigned int k = 0; k < model.observations().size(); ++k)
+      outputs.push_back(model.observations()[k]);
+  }
+
+
+  void
+  FuzzyStudyResults::set_proofs(const ModelProofs &p)
+  {
+    optimisation   = p.proven.bounds;
+    proofs         = p.proven.proofs;
+    has_proofs     = true;
+    proof_rounds   = p.proven.rounds;
+    unproven       = p.proven.unproven;
+    proof_stop     = p.proven.stopped;
+    proof_settings = p.settings;
+    proof_cg       = p.cg;
+    model_after    = p.model_after;
+  }
+
+
   namespace FuzzyStudyReport
   {
     std::string
@@ -274,6 +301,17 @@ namespace FuzzyContact
             << std::right << p.number.to_string() << "\n";
       out << n_alpha << " alpha levels\n";
       return out.str();
+    }
+
+
+    std::string
+    model(const double offline_time, const std::string &description)
+    {
+      std::ostringstream built;
+      built << "model (built once, " << std::fixed << std::setprecision(2)
+            << offline_time << " s):\n"
+            << description;
+      return built.str();
     }
 
 
@@ -379,6 +417,38 @@ namespace FuzzyContact
                                panels,
                                message))
         report.say("warning: " + message + "\n");
+    }
+
+
+    void
+    write(const FuzzyStudyResults &results,
+          Report                  &report,
+          const nlohmann::json    &json,
+          const std::string       &directory)
+    {
+      OutputFiles output(directory);
+      plot(results, output, report);
+      output.add("report.txt", report.text());
+      output.add("results.json", json.dump(2) + "\n");
+      output.write_all();
+      std::cout << "\nWrote report.txt, results.json and membership.png (.dat, "
+                   ".gp) to "
+                << output.directory() << "/" << std::endl;
+    }
+
+
+    std::string
+    unproven(const FuzzyStudyResults &results, const int exit_status)
+    {
+      std::ostringstream out;
+      out << "step-4: " << results.unproven.size()
+          << " bound(s) not proven within " << results.proof_settings.tolerance
+          << " of their output's range (the warnings in "
+             "report.txt); exit status "
+          << exit_status
+          << " ('accept unproven' of subsection Proofs accepts "
+             "them)";
+      return out.str();
     }
   } // namespace FuzzyStudyReport
 } // namespace FuzzyContact

@@ -41,16 +41,12 @@
 #include <fuzzycontact/base/program.h>
 #include <fuzzycontact/base/progress.h>
 #include <fuzzycontact/base/rank_timers.h>
-#include <fuzzycontact/fuzzy/bound_proof.h>
 #include <fuzzycontact/fuzzy/extension_principle.h>
-#include <fuzzycontact/fuzzy/feasible_region.h>
 #include <fuzzycontact/fuzzy/fuzzy_parameters.h>
-#include <fuzzycontact/fuzzy/global_stage.h>
 #include <fuzzycontact/fuzzy/optimisation_method.h>
 #include <fuzzycontact/fuzzy/proof_feedback.h>
 #include <fuzzycontact/fuzzy/vertex_method.h>
 #include <fuzzycontact/output/fuzzy_report.h>
-#include <fuzzycontact/output/output_files.h>
 #include <fuzzycontact/scene/scene.h>
 #include <fuzzycontact/study/fuzzy_contact_model.h>
 #include <fuzzycontact/study/input_checks.h>
@@ -62,12 +58,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include <cmath>
-#include <iomanip>
 #include <iostream>
-#include <limits>
 #include <memory>
-#include <sstream>
 
 namespace Step4
 {
@@ -82,19 +74,18 @@ namespace Step4
   // (Input::parse_in_passes).
   struct Parameters
   {
-    std::string               scene_file;
-    std::string               output_directory;
-    std::vector<std::string>  outputs;
-    unsigned int              n_alpha;
-    bool                      vertex_method;
-    bool                      extension_principle;
-    unsigned int              points_per_dimension;
-    bool                      reuse_factorisations;
-    FuzzyParameterSet         fuzzy;
-    FuzzyContactModelSettings model;
-    OptimisationSettings      optimisation;
-    ProofSettings             proofs;
-    std::vector<std::string>  warnings;
+    std::string                scene_file;
+    std::string                output_directory;
+    std::vector<std::string>   outputs;
+    unsigned int               n_alpha;
+    bool                       vertex_method;
+    bool                       extension_principle;
+    ExtensionPrincipleSettings reference;
+    FuzzyParameterSet          fuzzy;
+    FuzzyContactModelSettings  model;
+    OptimisationSettings       optimisation;
+    ProofSettings              proofs;
+    std::vector<std::string>   warnings;
 
     void
     declare_parameters(ParameterHandler &prm) const
@@ -127,24 +118,7 @@ namespace Step4
                         Patterns::Bool(),
                         "Also compute the Extension Principle reference "
                         "(exact full-order solves on a dense grid).");
-      prm.enter_subsection("Extension principle");
-      prm.declare_entry("points per dimension",
-                        "4",
-                        Patterns::Integer(2, 100),
-                        "Every alpha level's box is sampled on a grid of "
-                        "this many equally spaced values per parameter "
-                        "(both ends included).");
-      prm.declare_entry("reuse factorisations",
-                        "true",
-                        Patterns::Bool(),
-                        "false: every sample is an independent full-order "
-                        "analysis (new factorisations, refined displacement "
-                        "fields), the cost of a study without reduced "
-                        "models. true: keep the nominal factorisations and "
-                        "contact flexibility columns and reuse them where "
-                        "exact (stiffness a multiple of the nominal one): "
-                        "the same answers to about 1e-9, much cheaper.");
-      prm.leave_subsection();
+      ExtensionPrincipleSettings::declare_parameters(prm);
       ProgressLines::declare_parameters(prm);
       fuzzy.declare_parameters(prm);
       FuzzyContactModelSettings::declare_parameters(prm);
@@ -169,10 +143,7 @@ namespace Step4
                                         "at least the support and the core");
       vertex_method = prm.get_bool("vertex method");
       extension_principle = prm.get_bool("extension principle");
-      prm.enter_subsection("Extension principle");
-      points_per_dimension = prm.get_integer("points per dimension");
-      reuse_factorisations = prm.get_bool("reuse factorisations");
-      prm.leave_subsection();
+      reference.parse_parameters(prm);
       model.parse_parameters(prm);
       optimisation.parse_parameters(prm);
       proofs.parse_parameters(prm);
@@ -204,17 +175,7 @@ namespace Step4
                                           model.reduced.static_correction,
                                           model.modal.n_modes);
       if (extension_principle)
-        Input::in_range(n_alpha * std::pow(1.0 * points_per_dimension,
-                                           fuzzy.parameters().size()),
-                        0,
-                        1e5,
-                        "Extension principle: points per dimension = " +
-                          std::to_string(points_per_dimension) + " with " +
-                          std::to_string(fuzzy.parameters().size()) +
-                          " fuzzy parameters and " + std::to_string(n_alpha) +
-                          " alpha levels: the exact solves (about number of "
-                          "alpha levels x points per dimension ^ parameters)",
-                        "lower one of these keys");
+        reference.check_size(n_alpha, fuzzy.parameters().size());
       if (!InputChecks::all_crisp_warning(fuzzy).empty())
         warnings.push_back(InputChecks::all_crisp_warning(fuzzy));
     }
@@ -302,21 +263,15 @@ namespace Step4
                                        results.parameters,
                                        parameters.n_alpha));
     Timer wall;
-    model                = std::make_unique<FuzzyContactModel>(scene,
+    model = std::make_unique<FuzzyContactModel>(scene,
                                                 parameters.fuzzy,
                                                 parameters.outputs,
                                                 parameters.model,
                                                 &timer,
                                                 comm);
-    results.offline_time = Utilities::MPI::max(wall.wall_time(), comm);
-    results.n_dofs       = model->n_dofs();
-    for (unsigned int k = 0; k < model->observations().size(); ++k)
-      results.outputs.push_back(model->observations()[k]);
-    std::ostringstream built;
-    built << "model (built once, " << std::fixed << std::setprecision(2)
-          << results.offline_time << " s):\n"
-          << model->describe();
-    report.say(built.str());
+    results.set_model(*model, Utilities::MPI::max(wall.wall_time(), comm));
+    report.say(
+      FuzzyStudyReport::model(results.offline_time, model->describe()));
   }
 
 
@@ -360,99 +315,36 @@ namespace Step4
     if (model->can_lose_equilibrium())
       {
         TimerOutput::Scope scope(timer, "static equilibrium (every box)");
-        const unsigned int n_free = [&]() {
-          unsigned int n = 0;
-          for (const FuzzyNumber &f : numbers)
-            n += f.alpha_cut(0).width() > 0;
-          return n;
-        }();
-        results.equilibrium = feasible_region_on_ranks(
-          numbers,
-          alpha,
-          [&](const std::vector<double> &p) {
-            return model->has_static_equilibrium(p);
-          },
-          LocalOptimisation::default_design_points(n_free),
-          comm,
-          model->reduced_communicator());
+        results.equilibrium     = model->equilibrium_region(numbers, alpha);
         results.has_equilibrium = true;
         results.free_bodies     = model->bodies_held_by_contact();
       }
 
-    {
-      // Every bound's proof: its argument once more, exactly, on the
-      // factorisations of the offline build (shared by the ranks, in the
-      // proofs' time; a changed zone modulus by conjugate gradients on
-      // them). A bound the proof does not confirm within the tolerance
-      // makes the model richer there, and the bounds are searched again
-      // (fuzzy/proof_feedback.h).
-      // (Proven also within the accuracy asked of the outputs.)
-      ProofSettings ps    = parameters.proofs;
-      ps.accuracy         = parameters.optimisation.response_tolerance;
-      const double shared = model->share_factorisations(&timer);
-      model->set_reuse_factorisations(true);
-      model->set_iterative_solves(
-        ps.solver == ProofSettings::Solver::cg
-          ? FullOrderModel::ChangedStiffness::cg
-        : ps.solver == ProofSettings::Solver::factorisation
-          ? FullOrderModel::ChangedStiffness::factorisation
-          : FullOrderModel::ChangedStiffness::automatic,
-        ps.cg_tolerance,
-        ps.cg_max_iterations,
-        "keys 'cg tolerance' and 'cg max "
-        "iterations' of subsection Proofs");
-      const Response proved = [&](const std::vector<double> &p) {
-        std::vector<double> values;
-        if (!p.empty())
-          values = model->full_order(p);
-        if (!has_solution(values))
-          values.assign(names.size(), std::numeric_limits<double>::quiet_NaN());
-        return values;
-      };
-      unsigned int       round  = 0;
-      const ProvenBounds proven = prove_and_correct(
-        [&]() {
-          return bounds(OptimisationMethod(parameters.optimisation),
-                        reduced,
-                        "optimisation (reduced model)");
-        },
-        [&](const FuzzyOutputBounds &b) {
-          TimerOutput::Scope scope(timer, "proofs (full order at the bounds)");
-          return prove_bounds(b, proved, comm);
-        },
-        [&](const std::vector<std::vector<double>> &points) {
-          ++round;
-          const unsigned int added = model->enrich(points, &timer);
-          report.say(FuzzyStudyReport::enrichment(round,
-                                                  points.size(),
-                                                  added,
-                                                  ps.tolerance));
-          return added;
-        },
-        ps);
-      model->set_iterative_solves(
-        FullOrderModel::ChangedStiffness::factorisation);
-      results.optimisation               = proven.bounds;
-      results.proofs                     = proven.proofs;
-      results.optimisation.wall_time     = 0;
-      results.optimisation.n_evaluations = 0;
-      results.proofs.wall_time           = shared;
-      results.proofs.n_evaluations       = 0;
-      for (const ProofRound &r : proven.rounds)
-        {
-          results.optimisation.wall_time += r.search_time;
-          results.optimisation.n_evaluations += r.evaluations;
-          results.proofs.wall_time += r.proof_time + r.enrichment_time;
-          results.proofs.n_evaluations += r.proofs;
-        }
-      results.has_proofs     = true;
-      results.proof_rounds   = proven.rounds;
-      results.unproven       = proven.unproven;
-      results.proof_stop     = proven.stopped;
-      results.proof_settings = ps;
-      results.proof_cg       = model->iterative_statistics();
-      results.model_after    = round > 0 ? model->describe() : "";
-    }
+    // Every bound's proof: its argument once more, exactly, on the
+    // factorisations of the offline build (shared by the ranks, in the
+    // proofs' time; a changed zone modulus by conjugate gradients on
+    // them). A bound the proof does not confirm within the tolerance
+    // makes the model richer there, and the bounds are searched again
+    // (fuzzy/proof_feedback.h, FuzzyContactModel::proven_bounds()).
+    // (Proven also within the accuracy asked of the outputs.)
+    ProofSettings proofs = parameters.proofs;
+    proofs.accuracy      = parameters.optimisation.response_tolerance;
+    results.set_proofs(model->proven_bounds(
+      [&]() {
+        return bounds(OptimisationMethod(parameters.optimisation),
+                      reduced,
+                      "optimisation (reduced model)");
+      },
+      proofs,
+      [&](const unsigned int round,
+          const std::size_t  n_points,
+          const unsigned int added) {
+        report.say(FuzzyStudyReport::enrichment(round,
+                                                n_points,
+                                                added,
+                                                proofs.tolerance));
+      },
+      &timer));
     if (parameters.vertex_method)
       {
         results.vertex =
@@ -461,26 +353,27 @@ namespace Step4
       }
     if (parameters.extension_principle)
       {
-        model->set_reuse_factorisations(parameters.reuse_factorisations);
+        model->set_reuse_factorisations(
+          parameters.reference.reuse_factorisations);
         const unsigned long n_samples =
           extension_principle_size(numbers,
                                    results.alpha,
-                                   parameters.points_per_dimension);
+                                   parameters.reference.points_per_dimension);
         report.say(FuzzyStudyReport::extension_principle(
           n_samples,
-          parameters.points_per_dimension,
-          parameters.reuse_factorisations));
+          parameters.reference.points_per_dimension,
+          parameters.reference.reuse_factorisations));
         const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
         progress                   = std::make_unique<Progress>(
           "Extension Principle, full-order solves" +
             std::string(n_ranks > 1 ? " of the first rank" : ""),
           (n_samples + n_ranks - 1) / n_ranks);
         results.reference =
-          bounds(ExtensionPrinciple(parameters.points_per_dimension),
+          bounds(ExtensionPrinciple(parameters.reference.points_per_dimension),
                  exact,
                  "extension principle (full order)");
         results.has_reference    = true;
-        results.reference_reuses = parameters.reuse_factorisations;
+        results.reference_reuses = parameters.reference.reuse_factorisations;
       }
   }
 
@@ -502,14 +395,7 @@ namespace Step4
     TimerOutput::Scope scope(timer, "output");
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
-    OutputFiles output(parameters.output_directory);
-    FuzzyStudyReport::plot(results, output, report);
-    output.add("report.txt", report.text());
-    output.add("results.json", json.dump(2) + "\n");
-    output.write_all();
-    std::cout << "\nWrote report.txt, results.json and membership.png (.dat, "
-                 ".gp) to "
-              << output.directory() << "/" << std::endl;
+    FuzzyStudyReport::write(results, report, json, parameters.output_directory);
   }
 
 
@@ -524,14 +410,7 @@ namespace Step4
     if (!results.unproven.empty() && !parameters.proofs.accept_unproven)
       {
         if (pcout.is_active())
-          std::cerr << "step-4: " << results.unproven.size()
-                    << " bound(s) not proven within "
-                    << parameters.proofs.tolerance
-                    << " of their output's range (the warnings in "
-                       "report.txt); exit status "
-                    << unproven_exit_status
-                    << " ('accept unproven' of subsection Proofs accepts "
-                       "them)"
+          std::cerr << FuzzyStudyReport::unproven(results, unproven_exit_status)
                     << std::endl;
         exit_status = unproven_exit_status;
       }

@@ -1,9 +1,11 @@
 // FuzzyContactModel's evaluations (fuzzy_contact_model.h): the reduced and
 // the exact model at a point, each reduced solve started from the nearest
 // evaluated point's contact states, and the points without a static
-// equilibrium (a result of the point, not an error).
+// equilibrium (a result of the point, not an error) and where in every box
+// they lie.
 
 #include <fuzzycontact/base/input.h>
+#include <fuzzycontact/fuzzy/global_stage.h>
 #include <fuzzycontact/study/fuzzy_contact_model.h>
 
 #include <deal.II/base/exceptions.h>
@@ -39,6 +41,28 @@ namespace FuzzyContact
       return std::vector<double>();
     });
     return feasible;
+  }
+
+
+  FeasibleRegion
+  FuzzyContactModel::equilibrium_region(const std::vector<FuzzyNumber> &numbers,
+                                        const std::vector<double>      &alpha)
+  {
+    const unsigned int n_free = [&]() {
+      unsigned int n = 0;
+      for (const FuzzyNumber &f : numbers)
+        n += f.alpha_cut(0).width() > 0;
+      return n;
+    }();
+    return feasible_region_on_ranks(
+      numbers,
+      alpha,
+      [&](const std::vector<double> &p) {
+        return has_static_equilibrium(p);
+      },
+      LocalOptimisation::default_design_points(n_free),
+      comm,
+      reduced_communicator());
   }
 
 

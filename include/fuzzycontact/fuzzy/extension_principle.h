@@ -16,8 +16,38 @@
 
 #include <fuzzycontact/fuzzy/sampling_method.h>
 
+#include <deal.II/base/parameter_handler.h>
+
 namespace FuzzyContact
 {
+  using namespace dealii;
+
+  /**
+   * The keys of subsection "Extension principle" of a fuzzy study: the grid
+   * of every box, and whether the exact model that evaluates it keeps its
+   * factorisations where that is exact (false: every sample is an
+   * independent analysis).
+   */
+  struct ExtensionPrincipleSettings
+  {
+    unsigned int points_per_dimension = 4;
+    bool         reuse_factorisations = true;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /**
+     * Throws, naming the keys, if @p n_alpha levels of @p n_parameters
+     * fuzzy parameters would need more than 1e5 exact solves.
+     */
+    void
+    check_size(const unsigned int n_alpha,
+               const unsigned int n_parameters) const;
+  };
+
+
   class ExtensionPrinciple : public SamplingMethod
   {
   public:

@@ -78,6 +78,19 @@ namespace FuzzyContact
      * (FuzzyContactModel::n_at_limit_of_equilibrium()).
      */
     unsigned long n_at_limit = 0;
+
+    /**
+     * What the model built in @p offline_time [s] is: its DoFs and outputs.
+     */
+    void
+    set_model(const FuzzyContactModel &model, const double offline_time);
+
+    /**
+     * The optimisation's bounds and everything about their proofs, from
+     * @p p (FuzzyContactModel::proven_bounds()).
+     */
+    void
+    set_proofs(const ModelProofs &p);
   };
 
   namespace FuzzyStudyReport
@@ -89,6 +102,10 @@ namespace FuzzyContact
           const unsigned int                 n_processes,
           const std::vector<FuzzyParameter> &parameters,
           const unsigned int                 n_alpha);
+
+    /** The model built in @p offline_time [s], as @p description says. */
+    std::string
+    model(const double offline_time, const std::string &description);
 
     /**
      * The line announcing the Extension Principle's @p n_samples exact
@@ -171,6 +188,24 @@ namespace FuzzyContact
      */
     void
     plot(const FuzzyStudyResults &results, OutputFiles &files, Report &report);
+
+    /**
+     * Writes report.txt (the text of @p report), results.json (@p json) and
+     * the membership plot (plot()) into @p directory, and says so on
+     * standard output.
+     */
+    void
+    write(const FuzzyStudyResults &results,
+          Report                  &report,
+          const nlohmann::json    &json,
+          const std::string       &directory);
+
+    /**
+     * What a run some of whose bounds are not proven (results.unproven)
+     * says on standard error: how many, and the @p exit_status it returns.
+     */
+    std::string
+    unproven(const FuzzyStudyResults &results, const int exit_status);
   } // namespace FuzzyStudyReport
 } // namespace FuzzyContact
 

@@ -36,7 +36,10 @@
 
 #include <fuzzycontact/contact/active_set_solver.h>
 #include <fuzzycontact/contact/fl2c.h>
+#include <fuzzycontact/fuzzy/feasible_region.h>
 #include <fuzzycontact/fuzzy/fuzzy_parameters.h>
+#include <fuzzycontact/fuzzy/interval_method.h>
+#include <fuzzycontact/fuzzy/proof_feedback.h>
 #include <fuzzycontact/modal/modal_solver.h>
 #include <fuzzycontact/scene/scene.h>
 #include <fuzzycontact/study/contact_scene.h>
@@ -102,6 +105,23 @@ namespace FuzzyContact
     {
       ar &assembled &factorised;
     }
+  };
+
+  /**
+   * The bounds of a study proven on its model
+   * (FuzzyContactModel::proven_bounds()): the rounds of prove_and_correct()
+   * (fuzzy/proof_feedback.h), the last round's bounds and proofs with the
+   * evaluations and wall times of all rounds (the proofs' with the
+   * enrichment and the sharing of the factorisations), the settings they
+   * were proven with, what the exact solves' conjugate gradients did, and
+   * the model's description after it was made richer (empty if it was not).
+   */
+  struct ModelProofs
+  {
+    ProvenBounds             proven;
+    ProofSettings            settings;
+    IterativeSolveStatistics cg;
+    std::string              model_after;
   };
 
   class FuzzyContactModel
@@ -189,6 +209,18 @@ namespace FuzzyContact
     has_static_equilibrium(const std::vector<double> &values);
 
     /**
+     * Where in the box of every level of @p numbers (at the levels
+     * @p alpha) the loads have a static equilibrium
+     * (feasible_region_on_ranks(), fuzzy/feasible_region.h, on the ranks of
+     * reduced_communicator(), from as many design points as the
+     * optimisation's global stage evaluates). Collective over the
+     * communicator of the constructor.
+     */
+    FeasibleRegion
+    equilibrium_region(const std::vector<FuzzyNumber> &numbers,
+                       const std::vector<double>      &alpha);
+
+    /**
      * At the limit of equilibrium (the loads need all but a relative
      * 1e-6 of every friction coefficient) the static answer is degenerate:
      * a body about to slide may slip any amount, and the contact solvers
@@ -227,6 +259,27 @@ namespace FuzzyContact
     unsigned int
     enrich(const std::vector<std::vector<double>> &points,
            TimerOutput                            *timer = nullptr);
+
+    /**
+     * The bounds that @p search finds (an interval method on reduced()),
+     * each proven by full_order() at its argument; where some are not
+     * proven, the model is made richer there (enrich()) and they are
+     * searched again, as @p settings say (prove_and_correct(),
+     * fuzzy/proof_feedback.h). @p enriched(round, points, vectors added) is
+     * told of every enrichment. The exact solves reuse the factorisations
+     * of the offline build (shared by the ranks: share_factorisations()),
+     * a changed zone modulus solved as the settings say
+     * (set_iterative_solves(): afterwards factorised again); the proofs are
+     * timed in @p timer. Collective over the communicator of the
+     * constructor.
+     */
+    ModelProofs
+    proven_bounds(const std::function<FuzzyOutputBounds()>      &search,
+                  const ProofSettings                           &settings,
+                  const std::function<void(unsigned int round,
+                                           std::size_t  n_points,
+                                           unsigned int added)> &enriched,
+                  TimerOutput *timer = nullptr);
 
     /** The reduced model (for its description and checks). */
     const ReducedOrderModel &

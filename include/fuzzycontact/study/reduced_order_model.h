@@ -224,17 +224,15 @@ namespace FuzzyContact
     struct ComponentModel;
 
     void
-    build_reanalysis(ComponentModel                     &m,
-                     const unsigned int                  c,
-                     const std::vector<VaryingQuantity> &varying,
-                     TimerOutput                        *timer);
+    build_reanalysis(ComponentModel    &m,
+                     const unsigned int c,
+                     TimerOutput       *timer);
     ReducedComponentMatrices
     reanalysed_matrices(const ComponentModel &m, const SceneState &state) const;
     void
-    build_zone_correction(ComponentModel                     &m,
-                          const unsigned int                  c,
-                          const std::vector<VaryingQuantity> &varying,
-                          TimerOutput                        *timer);
+    build_zone_correction(ComponentModel    &m,
+                          const unsigned int c,
+                          TimerOutput       *timer);
     std::vector<double>
     zone_values(const ComponentModel &m, const SceneState &state) const;
     void
