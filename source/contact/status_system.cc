@@ -1,9 +1,8 @@
-#include <fuzzycontact/base/lapack_extras.h>
+#include <fuzzycontact/base/row_updated_lu.h>
 #include <fuzzycontact/contact/status_system.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/lac/lapack_full_matrix.h>
-#include <deal.II/lac/lapack_templates.h>
 
 #include <algorithm>
 #include <cmath>
@@ -17,53 +16,15 @@ namespace FuzzyContact
     Vector<double>        x(b);
     if (n == 0)
       return x;
-    std::vector<double> lu(n * n);
-    double              norm1 = 0;
+    // LAPACK's LU where its condition estimate allows, else least squares.
+    std::vector<double> columns(std::size_t(n) * n);
     for (types::blas_int j = 0; j < n; ++j)
+      for (types::blas_int i = 0; i < n; ++i)
+        columns[i + j * n] = A(i, j);
+    RowUpdatedLU lu;
+    if (lu.factorise(columns, n, 1e-13))
       {
-        double column = 0;
-        for (types::blas_int i = 0; i < n; ++i)
-          {
-            lu[i + j * n] = A(i, j);
-            column += std::abs(A(i, j));
-          }
-        norm1 = std::max(norm1, column);
-      }
-    std::vector<types::blas_int> pivots(n);
-    types::blas_int              info = 0;
-    getrf(&n, &n, lu.data(), &n, pivots.data(), &info);
-    Assert(info >= 0, ExcInternalError());
-    double rcond = 0;
-    if (info == 0)
-      {
-        std::vector<double>          work(4 * n);
-        std::vector<types::blas_int> iwork(n);
-        const char                   norm = '1';
-        dgecon_(&norm,
-                &n,
-                lu.data(),
-                &n,
-                &norm1,
-                &rcond,
-                work.data(),
-                iwork.data(),
-                &info);
-        Assert(info == 0, ExcInternalError());
-      }
-    if (rcond > 1e-13)
-      {
-        const char            trans = 'N';
-        const types::blas_int one   = 1;
-        getrs(&trans,
-              &n,
-              &one,
-              lu.data(),
-              &n,
-              pivots.data(),
-              x.data(),
-              &n,
-              &info);
-        Assert(info == 0, ExcInternalError());
+        lu.vmult(x, b);
         return x;
       }
     LAPACKFullMatrix<double> pinv(n, n);
