@@ -87,7 +87,7 @@ namespace FuzzyContact
   {
     Assert(!empty(), ExcMessage("replace_rows() needs factors"));
     AssertDimension(A.size(), std::size_t(N) * N);
-    rows.clear();
+    restore();
     if (new_rows.empty())
       return true;
     const types::blas_int n = N, r = new_rows.size();
@@ -213,6 +213,13 @@ namespace FuzzyContact
          &alpha,
          dst.data(),
          &one);
+  }
+
+
+  void
+  RowUpdatedLU::restore()
+  {
+    rows.clear();
   }
 
 

@@ -413,7 +413,7 @@ namespace FuzzyContact
     const bool same_W = kept && lu_state == W.state();
     if (same_W && key == lu_key)
       {
-        factors.replace_rows(matrix, {});
+        factors.restore();
         factors.vmult(x, b);
         return true;
       }

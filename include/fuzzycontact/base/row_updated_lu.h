@@ -58,6 +58,10 @@ namespace FuzzyContact
     replace_rows(const std::vector<double>       &A,
                  const std::vector<unsigned int> &rows);
 
+    /** Back to A0: no row replaced (the kept columns stay). */
+    void
+    restore();
+
     /** dst = M^{-1} src, M the factorised matrix with the rows replaced. */
     void
     vmult(Vector<double> &dst, const Vector<double> &src) const;
