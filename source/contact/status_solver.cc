@@ -80,6 +80,52 @@ namespace FuzzyContact
         }
     }
 
+    // The rows @p rows (the tangential equations 2i + 1 of closed nodes
+    // whose status or friction coefficient changed) of a matrix @p A that
+    // gather() assembled for the same unknowns, W and scale, made anew for
+    // the statuses now. W is symmetric, so the row of W that a sticking
+    // node's equation needs is its column: one column per row, instead of
+    // all of them.
+    void
+    regather_rows(FlexibilityOperator              &W,
+                  const StatusSolver::Unknowns     &unknowns,
+                  const std::vector<ContactStatus> &status,
+                  const std::vector<int>           &sign,
+                  const std::vector<double>        &mu,
+                  const RigidMotions               *rigid,
+                  const double                      scale,
+                  const std::vector<unsigned int>  &rows,
+                  std::vector<double>              &A)
+    {
+      const std::vector<unsigned int> &closed = unknowns.closed;
+      const unsigned int n_c = closed.size(), m = 2 * n_c, N = unknowns.size();
+      AssertDimension(A.size(), std::size_t(N) * N);
+      for (const unsigned int r : rows)
+        {
+          Assert(r % 2 == 1 && r < m, ExcInternalError());
+          const unsigned int k = closed[r / 2];
+          if (status[k] == ContactStatus::stick)
+            {
+              const double *w = W.column(tangential_row(k));
+              for (unsigned int c = 0; c < m; ++c)
+                A[std::size_t(c) * N + r] =
+                  w[c % 2 == 0 ? normal_row(closed[c / 2])
+                               : tangential_row(closed[c / 2])];
+              for (unsigned int j = 0; j < unknowns.n_motions; ++j)
+                A[std::size_t(m + j) * N + r] =
+                  scale * rigid->gaps(tangential_row(k), j);
+            }
+          else
+            {
+              for (unsigned int c = 0; c < N; ++c)
+                A[std::size_t(c) * N + r] = 0;
+              const double d                = W.diagonal(tangential_row(k));
+              A[std::size_t(r) * N + r]     = d;
+              A[std::size_t(r - 1) * N + r] = -d * mu[k] * sign[k];
+            }
+        }
+    }
+
     // A dense column-major matrix for GMRES.
     class DenseOperator
     {
@@ -284,6 +330,8 @@ namespace FuzzyContact
     lu_unknowns = Unknowns();
     lu_key.clear();
     factors.clear();
+    matrix.clear();
+    matrix_key.clear();
   }
 
 
@@ -429,8 +477,24 @@ namespace FuzzyContact
         if (std::isinf(key[i]) != std::isinf(lu_key[i]) ||
             (key[i] < 0) != (lu_key[i] < 0) || (same_W && key[i] != lu_key[i]))
           changed.push_back(2 * i + 1);
+    // The system: at the same unknowns, W and scale as the one assembled
+    // last, only the rows whose equation changed are made anew (most
+    // iterations of the active-set method change a few nodes).
     std::vector<double> &A = matrix;
-    gather(W, unknowns, status, sign, mu, rigid, scale, A);
+    if (!A.empty() && unknowns == matrix_unknowns &&
+        matrix_state == W.state() && key.back() == matrix_key.back())
+      {
+        std::vector<unsigned int> rows;
+        for (unsigned int i = 0; i + 1 < key.size(); ++i)
+          if (key[i] != matrix_key[i])
+            rows.push_back(2 * i + 1);
+        regather_rows(W, unknowns, status, sign, mu, rigid, scale, rows, A);
+      }
+    else
+      gather(W, unknowns, status, sign, mu, rigid, scale, A);
+    matrix_unknowns = unknowns;
+    matrix_key      = key;
+    matrix_state    = W.state();
     // If GMRES took more than a few steps, or too many rows changed, the
     // factors are made anew for this system (the next solve, at a
     // neighbouring point or the next iteration, is then close to them

@@ -186,8 +186,13 @@ namespace FuzzyContact
     std::vector<double> lu_key;
     unsigned long       lu_state = 0;
     RowUpdatedLU        factors;
-    // The last system with friction assembled (kept to save its memory).
+    // The last system with friction assembled, for the unknowns, equations
+    // (as lu_key) and W's state it was assembled for: the next one at the
+    // same unknowns and W changes only the rows whose equation changed.
     std::vector<double> matrix;
+    Unknowns            matrix_unknowns;
+    std::vector<double> matrix_key;
+    unsigned long       matrix_state = 0;
     Counts              counts_;
     // GMRES, made at its first use and kept.
     struct Krylov;
