@@ -896,9 +896,9 @@ TEST(ClosedSetFactor, UpdatesSolveLikeANewFactorisation)
 // sequence of solves that takes every path: a new LU, the same system
 // again, a few nodes turning from sticking to slipping (rows replaced in
 // the kept LU), another W (a neighbouring point: the kept LU preconditions
-// GMRES), other friction coefficients, the frictionless system on the Cholesky factor with row
-// updates, and free rigid-body motions. Forces and amplitudes agree to
-// 1e-9 of their size.
+// GMRES), other friction coefficients, the frictionless system on the Cholesky
+// factor with row updates, and free rigid-body motions. Forces and amplitudes
+// agree to 1e-9 of their size.
 TEST(StatusSolver, EveryPathSolvesTheStatusSystem)
 {
   const unsigned int n_nodes = 30, n = 2 * n_nodes;
@@ -1455,8 +1455,28 @@ TEST(ReducedModel, RebuildsFromSmallMatricesForNewModuli)
       d -= q_rebuilt[c];
       EXPECT_LE(d.l2_norm(), 1e-10 * q_rebuilt[c].l2_norm());
     }
+
+  // W's state (contact_problem.h): new at other scales; back at scales it
+  // had lately, the state it had then, and W exactly as it was then (what
+  // a solver kept from it holds again); new once a part changed.
+  FlexibilityOperator      &W          = *scaled.problem().flexibility;
+  const unsigned long       s_state_id = W.state();
+  const unsigned int        j          = 0;
+  const double             *w          = W.column(j);
+  const std::vector<double> s_column(w, w + W.size());
+  scaled.set_stiffness_scales({1., 1.});
+  const unsigned long n_state_id = W.state();
+  EXPECT_NE(n_state_id, s_state_id);
+  EXPECT_NE(W.column(j)[j], s_column[j]);
+  scaled.set_stiffness_scales({1.05, 0.95});
+  EXPECT_EQ(W.state(), s_state_id);
+  const double *again = W.column(j);
+  for (unsigned int i = 0; i < W.size(); ++i)
+    EXPECT_NEAR(again[i], s_column[i], 1e-15 * std::abs(s_column[j]));
   scaled.replace_component(0, nominal_matrices[0]);
   scaled.replace_component(1, nominal_matrices[1]);
+  EXPECT_NE(W.state(), n_state_id);
+  EXPECT_NE(W.state(), s_state_id);
   const ReducedContactModel fresh(nominal_matrices,
                                   setup.interface->initial_gaps(),
                                   setup.interface->friction_coefficients());

@@ -49,6 +49,15 @@ namespace FuzzyContact
   }
 
 
+  void
+  FlexibilityOperator::restored(const unsigned long state)
+  {
+    Assert(state > 0 && state <= flexibility_states,
+           ExcMessage("Not a state this program gave out."));
+    state_ = state;
+  }
+
+
   unsigned long
   FlexibilityOperator::state() const
   {

@@ -471,12 +471,22 @@ namespace FuzzyContact
     // take them by a row update (RowUpdatedLU), exactly; what else changed
     // (another W, friction coefficients at another W: every row a little)
     // is left to GMRES, preconditioned by the updated factors.
-    std::vector<unsigned int> changed;
+    // At the same W, rows whose friction coefficient changed are replaced
+    // too, as long as they are few (a new friction coefficient at a
+    // neighbouring point changes every slipping row: GMRES then).
+    std::vector<unsigned int> changed, moved;
     if (kept)
       for (unsigned int i = 0; i + 1 < key.size(); ++i)
         if (std::isinf(key[i]) != std::isinf(lu_key[i]) ||
-            (key[i] < 0) != (lu_key[i] < 0) || (same_W && key[i] != lu_key[i]))
+            (key[i] < 0) != (lu_key[i] < 0))
           changed.push_back(2 * i + 1);
+        else if (same_W && key[i] != lu_key[i])
+          moved.push_back(2 * i + 1);
+    if (changed.size() + moved.size() <= max_replaced_rows(unknowns.size()))
+      {
+        changed.insert(changed.end(), moved.begin(), moved.end());
+        std::sort(changed.begin(), changed.end());
+      }
     // The system: at the same unknowns, W and scale as the one assembled
     // last, only the rows whose equation changed are made anew (most
     // iterations of the active-set method change a few nodes).

@@ -213,11 +213,15 @@ namespace FuzzyContact
       return diagonal_[i];
     }
 
-    // Forgets the columns and combines the diagonal afresh.
+    // Forgets the columns and combines the diagonal afresh; the state is
+    // @p previous (W back to a value it had then) or a new one.
     void
-    reset()
+    reset(const unsigned long previous = 0)
     {
-      changed();
+      if (previous > 0)
+        restored(previous);
+      else
+        changed();
       for (const unsigned int j : list)
         computed[j] = false;
       list.clear();
@@ -470,9 +474,21 @@ namespace FuzzyContact
 
 
   void
-  ReducedContactModel::flexibility_changed()
+  ReducedContactModel::flexibility_changed(const bool scales_only)
   {
-    flexibility_->reset();
+    unsigned long previous = 0;
+    if (!scales_only)
+      known_scales.clear();
+    for (const auto &[s, state] : known_scales)
+      if (s == scales)
+        previous = state;
+    flexibility_->reset(previous);
+    if (previous == 0)
+      {
+        if (known_scales.size() == max_known_scales)
+          known_scales.erase(known_scales.begin());
+        known_scales.emplace_back(scales, flexibility_->state());
+      }
     assemble_load_gaps();
   }
 
@@ -490,7 +506,7 @@ namespace FuzzyContact
     if (s == scales)
       return;
     scales = s;
-    flexibility_changed();
+    flexibility_changed(true);
   }
 
 

@@ -151,6 +151,14 @@ namespace FuzzyContact
     /** To be called by a derived class whenever its W changes. */
     void
     changed();
+    /**
+     * To be called by a derived class whose W is back to exactly the value
+     * it had when state() returned @p state (a reduced model back at
+     * stiffness scales it had), so that what was computed from W then is
+     * known to hold again.
+     */
+    void
+    restored(const unsigned long state);
 
   private:
     unsigned long state_;

@@ -61,6 +61,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace FuzzyContact
@@ -270,9 +271,13 @@ namespace FuzzyContact
     // alone (first_motion, the problem's RigidMotions), and W.
     void
     finish_construction();
-    // The state of W changed: columns are combined afresh.
+    // The state of W changed: columns are combined afresh. If only the
+    // stiffness scales changed (@p scales_only) and W had these scales
+    // lately, it gets the state it had then back (what a solver kept from
+    // it holds again: a study polls around a point, and most polls keep
+    // the scales of the point); otherwise a new one.
     void
-    flexibility_changed();
+    flexibility_changed(const bool scales_only = false);
     // g_load = sum_c sum_l (F_l / F_ref,l) g_load,c,l / s_c, and that of
     // each load stage.
     void
@@ -293,8 +298,12 @@ namespace FuzzyContact
 
     std::vector<Part> variable, fixed;
     // The first free motion of each component in the problem's.
-    std::vector<unsigned int>        first_motion;
-    std::vector<double>              scales;
+    std::vector<unsigned int> first_motion;
+    std::vector<double>       scales;
+    // The last stiffness scales and the state W had at each (at most
+    // max_known_scales, the latest last), since the parts last changed.
+    std::vector<std::pair<std::vector<double>, unsigned long>> known_scales;
+    static constexpr unsigned int    max_known_scales = 32;
     std::vector<std::vector<double>> densities;
     std::vector<std::vector<double>> load_forces;
     std::vector<LoadStage>           load_stages;
