@@ -999,6 +999,77 @@ TEST(StatusSolver, EveryPathSolvesTheStatusSystem)
   EXPECT_GT(solver.factor().n_inserts + solver.factor().n_erases, 0u);
 }
 
+// The load steps of a ContactWorkspace share their factors: at a point far
+// from the last one, the first load step makes a new LU, and the next
+// step, at the same W with the same closed nodes but a few others
+// slipping, takes a copy of it with those rows replaced instead of its own
+// LU; with more rows to replace than max_replaced_rows(), it does not.
+// Forces and amplitudes agree with StatusSystem's dense solve to 1e-9.
+TEST(StatusSolver, ALoadStepTakesTheFactorsOfAnotherAtTheSameW)
+{
+  const unsigned int       n_nodes = 30, n = 2 * n_nodes;
+  const FullMatrix<double> W = random_flexibility(n, 5);
+  RigidMotions             rigid;
+  rigid.gaps.reinit(n, 1);
+  for (unsigned int i = 0; i < n; ++i)
+    rigid.gaps(i, 0) = i % 2 == 0 ? 1. : 0.2;
+  rigid.names = {"a"};
+  Vector<double> target(n), load(1);
+  for (unsigned int i = 0; i < n; ++i)
+    target[i] = -1e-6 * (1 + 0.5 * std::cos(0.7 * i));
+  load[0] = 2e3;
+  std::vector<ContactStatus> status(n_nodes, ContactStatus::stick);
+  std::vector<int>           sign(n_nodes, 0);
+  const std::vector<double>  mu(n_nodes, 0.3);
+  status[3] = ContactStatus::open;
+
+  ContactWorkspace workspace;
+  workspace.linear(2);
+  double     worst = 0;
+  const auto check = [&](const unsigned int step, FlexibilityOperator &op) {
+    Vector<double> p, a;
+    workspace.linear(step)
+      .solve(op, status, sign, mu, &rigid, target, load, p, a);
+    const StatusSystem system(op, status, sign, mu, &rigid);
+    Vector<double>     rhs(system.rows.size());
+    for (unsigned int r = 0; r < rhs.size(); ++r)
+      rhs[r] = target[system.rows[r]];
+    const Vector<double> x   = system.solve(rhs, load);
+    Vector<double>       dp  = system.forces(x, status, sign, mu);
+    Vector<double>       da  = system.amplitudes(x);
+    const double         p_0 = dp.linfty_norm(), a_0 = da.linfty_norm();
+    dp -= p;
+    da -= a;
+    worst = std::max({worst, dp.linfty_norm() / p_0, da.linfty_norm() / a_0});
+  };
+  const auto slip = [&](const std::vector<unsigned int> &nodes) {
+    for (const unsigned int k : nodes)
+      {
+        status[k] = ContactStatus::slip;
+        sign[k]   = k % 2 == 0 ? 1 : -1;
+      }
+  };
+
+  DenseFlexibility op(W);
+  check(1, op); // load step 1: a new LU
+  slip({5, 9});
+  check(2, op); // load step 2: step 1's LU, two rows replaced
+  EXPECT_EQ(workspace.linear(2).counts().adopted, 1u);
+  EXPECT_EQ(workspace.linear(2).counts().lu, 0u);
+  EXPECT_EQ(workspace.linear(2).counts().row_updates, 1u);
+
+  FullMatrix<double> far = W;
+  far.add(1., random_flexibility(n, 7));
+  DenseFlexibility other(far);
+  check(1, other); // step 1 far from its factors: a new LU
+  EXPECT_EQ(workspace.linear(1).counts().lu, 2u);
+  slip({0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20});
+  check(2, other); // 11 rows from step 1's equations: too many to take
+  EXPECT_EQ(workspace.linear(2).counts().adopted, 1u);
+  EXPECT_LE(worst, 1e-9);
+  EXPECT_EQ(workspace.counts().pseudo_inverse, 0u);
+}
+
 TEST(ActiveSetSolver, ThrowsWithIterationsAndResidualWhenItRunsOut)
 {
   FullMatrix<double> W(4, 4);

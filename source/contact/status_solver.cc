@@ -335,6 +335,13 @@ namespace FuzzyContact
   }
 
 
+  void
+  StatusSolver::set_siblings(const std::vector<StatusSolver> *siblings)
+  {
+    this->siblings = siblings;
+  }
+
+
   const StatusSolver::Counts &
   StatusSolver::counts() const
   {
@@ -457,6 +464,27 @@ namespace FuzzyContact
                       ? std::numeric_limits<double>::infinity()
                       : mu[k] * sign[k]);
     key.push_back(scale);
+    // Factors of another W: a sibling's of this W, if one is close enough,
+    // instead (a far point: the first load step made them).
+    if (siblings != nullptr &&
+        !(!factors.empty() && unknowns == lu_unknowns && lu_state == W.state()))
+      for (const StatusSolver &other : *siblings)
+        if (&other != this && !other.factors.empty() &&
+            other.lu_state == W.state() && other.lu_unknowns == unknowns &&
+            other.lu_key.back() == key.back())
+          {
+            unsigned int differ = 0;
+            for (unsigned int i = 0; i + 1 < key.size(); ++i)
+              differ += key[i] != other.lu_key[i];
+            if (differ > max_replaced_rows(unknowns.size()))
+              continue;
+            lu_unknowns = other.lu_unknowns;
+            lu_key      = other.lu_key;
+            lu_state    = other.lu_state;
+            factors     = other.factors;
+            ++counts_.adopted;
+            break;
+          }
     const bool kept   = !factors.empty() && unknowns == lu_unknowns;
     const bool same_W = kept && lu_state == W.state();
     if (same_W && key == lu_key)
@@ -477,11 +505,13 @@ namespace FuzzyContact
     std::vector<unsigned int> changed, moved;
     if (kept)
       for (unsigned int i = 0; i + 1 < key.size(); ++i)
-        if (std::isinf(key[i]) != std::isinf(lu_key[i]) ||
-            (key[i] < 0) != (lu_key[i] < 0))
-          changed.push_back(2 * i + 1);
-        else if (same_W && key[i] != lu_key[i])
-          moved.push_back(2 * i + 1);
+        {
+          if (std::isinf(key[i]) != std::isinf(lu_key[i]) ||
+              (key[i] < 0) != (lu_key[i] < 0))
+            changed.push_back(2 * i + 1);
+          else if (same_W && key[i] != lu_key[i])
+            moved.push_back(2 * i + 1);
+        }
     if (changed.size() + moved.size() <= max_replaced_rows(unknowns.size()))
       {
         changed.insert(changed.end(), moved.begin(), moved.end());

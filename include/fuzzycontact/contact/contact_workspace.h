@@ -40,7 +40,11 @@ namespace FuzzyContact
     linear(const unsigned int step)
     {
       if (solvers.size() < step)
-        solvers.resize(step);
+        {
+          solvers.resize(step);
+          for (StatusSolver &s : solvers)
+            s.set_siblings(&solvers);
+        }
       return solvers[step - 1];
     }
     /** What the linear solves of all load steps did so far. */

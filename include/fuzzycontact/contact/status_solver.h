@@ -90,6 +90,19 @@ namespace FuzzyContact
     void
     clear();
 
+    /**
+     * The solvers of the other load steps of the same problem (a
+     * ContactWorkspace's; @p siblings may hold this one too, and must
+     * outlive it). Where this solver's factors are of another W and a
+     * sibling's are of the present one, for the same unknowns and with at
+     * most max_replaced_rows() equations other than this solve's, the
+     * solve takes a copy of the sibling's and replaces those rows: at a
+     * point far from the last one, the load steps share the closed set and
+     * differ in which nodes stick or slip, so one LU serves them all.
+     */
+    void
+    set_siblings(const std::vector<StatusSolver> *siblings);
+
     /** What the solves did (for reports and benchmarks). */
     struct Counts
     {
@@ -98,6 +111,8 @@ namespace FuzzyContact
       /** Dense LU factorisations; GMRES solves and their steps; solves
        * on factors with rows replaced. */
       unsigned long lu = 0, gmres = 0, gmres_steps = 0, row_updates = 0;
+      /** Factors taken over from the solver of another load step. */
+      unsigned long adopted = 0;
       Counts &
       operator+=(const Counts &other)
       {
@@ -107,6 +122,7 @@ namespace FuzzyContact
         gmres += other.gmres;
         gmres_steps += other.gmres_steps;
         row_updates += other.row_updates;
+        adopted += other.adopted;
         return *this;
       }
     };
@@ -189,11 +205,12 @@ namespace FuzzyContact
     // The last system with friction assembled, for the unknowns, equations
     // (as lu_key) and W's state it was assembled for: the next one at the
     // same unknowns and W changes only the rows whose equation changed.
-    std::vector<double> matrix;
-    Unknowns            matrix_unknowns;
-    std::vector<double> matrix_key;
-    unsigned long       matrix_state = 0;
-    Counts              counts_;
+    std::vector<double>              matrix;
+    Unknowns                         matrix_unknowns;
+    std::vector<double>              matrix_key;
+    unsigned long                    matrix_state = 0;
+    Counts                           counts_;
+    const std::vector<StatusSolver> *siblings = nullptr;
     // GMRES, made at its first use and kept.
     struct Krylov;
     std::unique_ptr<Krylov> krylov_;
