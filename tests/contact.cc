@@ -33,6 +33,8 @@
 #include <fuzzycontact/study/observations.h>
 #include <fuzzycontact/study/reduced_order_model.h>
 
+#include <deal.II/lac/lapack_full_matrix.h>
+
 #include <gtest/gtest.h>
 
 #include "test_utilities.h"
@@ -1070,6 +1072,47 @@ TEST(StatusSolver, ALoadStepTakesTheFactorsOfAnotherAtTheSameW)
   EXPECT_EQ(workspace.counts().pseudo_inverse, 0u);
 }
 
+// Distributed contact with a small iteration limit: 20 nodes that all
+// close, max iterations = 5. The frictionless start closes one node per
+// iteration, so it has its own limit (3 per node), and the active set
+// iterations after it count from there. Without friction and with every
+// node closed, p_n solves W_nn p_n = -g_n: LAPACK's answer to 1e-9.
+TEST(ActiveSetSolver, TheFrictionlessStartClosesEveryNodeWhateverTheLimit)
+{
+  const unsigned int  n_nodes = 20, n = 2 * n_nodes;
+  FullMatrix<double>  W(n, n);
+  std::vector<double> g(n, 0.);
+  for (unsigned int k = 0; k < n_nodes; ++k)
+    {
+      for (unsigned int j = 0; j < n_nodes; ++j)
+        W(2 * k, 2 * j) =
+          1e-7 * std::exp(-std::abs(double(k) - double(j))) + (k == j) * 1e-6;
+      W(2 * k + 1, 2 * k + 1) = 1e-6;
+      g[2 * k]                = -1e-4 * (1 + 0.1 * std::sin(1. * k));
+    }
+  ActiveSetParameters parameters;
+  parameters.max_iterations = 5;
+  const ContactState s =
+    ActiveSetSolver(parameters).solve(small_problem(W, g, 0.), 1, 1, "test");
+
+  LAPACKFullMatrix<double> W_nn(n_nodes, n_nodes);
+  Vector<double>           p_n(n_nodes);
+  for (unsigned int k = 0; k < n_nodes; ++k)
+    {
+      p_n[k] = -g[2 * k];
+      for (unsigned int j = 0; j < n_nodes; ++j)
+        W_nn(k, j) = W(2 * k, 2 * j);
+    }
+  W_nn.compute_lu_factorization();
+  W_nn.solve(p_n);
+  for (unsigned int k = 0; k < n_nodes; ++k)
+    {
+      EXPECT_GT(p_n[k], 0.);
+      EXPECT_NEAR(s.p[2 * k], p_n[k], 1e-9 * p_n.linfty_norm());
+    }
+  EXPECT_GE(s.iterations, n_nodes);
+}
+
 TEST(ActiveSetSolver, ThrowsWithIterationsAndResidualWhenItRunsOut)
 {
   FullMatrix<double> W(4, 4);
@@ -1119,12 +1162,16 @@ TEST(ContactSolver, CreatedByNameTheyAgreeOnAProblemSolvedByHand)
           EXPECT_EQ(s.status[k], ContactStatus::stick) << name;
         }
     }
-  // The parameters reach the solver they belong to.
+  // The parameters reach the solver they belong to (the exact one on a
+  // problem whose active set iterations, after the frictionless start,
+  // need more than one: a node slips).
   exact.max_iterations = 1;
   fl2c.max_iterations  = 1;
+  const ContactProblem slipping =
+    small_problem(W, {-1e-3, 1e-4, -1e-3, -2e-4}, 0.3);
   EXPECT_NE(error_of([&]() {
               create_contact_solver("reduced exact", exact, fl2c)
-                ->solve(problem, 1, 1, "test");
+                ->solve(slipping, 1, 1, "test");
             })
               .find("in 1 iterations (key 'Exact contact solver/max "
                     "iterations'"),

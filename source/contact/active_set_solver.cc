@@ -26,7 +26,9 @@ namespace FuzzyContact
                       "200",
                       Patterns::Integer(),
                       "Active set iterations per load step before the "
-                      "solver gives up with an error.");
+                      "solver gives up with an error (its frictionless "
+                      "start, which closes one node per iteration, may take "
+                      "3 per slave node if that is more).");
     prm.leave_subsection();
   }
 
@@ -147,6 +149,8 @@ namespace FuzzyContact
               std::fill(status.begin(), status.end(), ContactStatus::stick);
           }
         complete_statuses();
+        // The start's iterations have their own limit (frictionless_start).
+        const unsigned int start_iterations = iterations;
 
         // Phase 2: primal-dual active set iterations.
         ContactState               state;
@@ -178,7 +182,7 @@ namespace FuzzyContact
                 check_motions_determined(step, state.p, what, scale);
                 return converged(state);
               }
-            if (iterations >= max_iterations)
+            if (iterations - start_iterations >= max_iterations)
               break;
 
             std::vector<ContactStatus> new_status = status;
@@ -293,6 +297,11 @@ namespace FuzzyContact
               gn[k] += step.rigid->gaps(normal_row(k), j) * a[j];
         };
         update_gaps();
+        // Lawson-Hanson closes one node per iteration (and opens some
+        // again): on distributed contact it needs at least as many
+        // iterations as nodes close, whatever the active set method's own
+        // limit (3 per node, as NNLS codes commonly allow).
+        const unsigned int start_limit = std::max(max_iterations, 3 * n);
         while (true)
           {
             // The most penetrating open node; stop if it penetrates less than
@@ -310,14 +319,15 @@ namespace FuzzyContact
                 (total > 0 && -c_n(deepest) * gn[deepest] <= tol * total))
               break;
             ++iterations;
-            if (iterations > max_iterations)
+            if (iterations > start_limit)
               {
                 std::ostringstream message;
                 message << what
                         << ": the frictionless start (Lawson-Hanson) did not "
                            "finish in "
-                        << max_iterations << " iterations (key '"
-                        << max_iterations_key << "'; load step " << step.step
+                        << start_limit << " iterations (3 per slave node, or "
+                        << "key '" << max_iterations_key
+                        << "' if larger; load step " << step.step
                         << "); the deepest open node still "
                            "penetrates by "
                         << -gn[deepest] << " m.";
