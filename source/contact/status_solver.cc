@@ -323,15 +323,26 @@ namespace FuzzyContact
   }
 
 
+  std::vector<unsigned int>
+  StatusSolver::Stamp::rows_differing_from(const Stamp &other) const
+  {
+    AssertDimension(key.size(), other.key.size());
+    std::vector<unsigned int> rows;
+    for (unsigned int i = 0; i + 1 < key.size(); ++i)
+      if (key[i] != other.key[i])
+        rows.push_back(2 * i + 1);
+    return rows;
+  }
+
+
   void
   StatusSolver::clear()
   {
     factor_.clear();
-    lu_unknowns = Unknowns();
-    lu_key.clear();
+    lu = Stamp();
     factors.clear();
     matrix.clear();
-    matrix_key.clear();
+    assembled = Stamp();
   }
 
 
@@ -456,38 +467,33 @@ namespace FuzzyContact
                               const Vector<double>             &b,
                               Vector<double>                   &x)
   {
-    // What the equations are: per closed node its tangential equation
+    // What the system is: per closed node its tangential equation
     // (sticking, or mu s of slipping), and the scale.
-    std::vector<double> key;
+    Stamp now{unknowns, {}, W.state()};
     for (const unsigned int k : unknowns.closed)
-      key.push_back(status[k] == ContactStatus::stick
-                      ? std::numeric_limits<double>::infinity()
-                      : mu[k] * sign[k]);
-    key.push_back(scale);
+      now.key.push_back(status[k] == ContactStatus::stick
+                          ? std::numeric_limits<double>::infinity()
+                          : mu[k] * sign[k]);
+    now.key.push_back(scale);
+    const std::vector<double> &key = now.key;
     // Factors of another W: a sibling's of this W, if one is close enough,
     // instead (a far point: the first load step made them).
     if (siblings != nullptr &&
-        !(!factors.empty() && unknowns == lu_unknowns && lu_state == W.state()))
+        !(!factors.empty() && lu.same_unknowns_and_W(now)))
       for (const StatusSolver &other : *siblings)
         if (&other != this && !other.factors.empty() &&
-            other.lu_state == W.state() && other.lu_unknowns == unknowns &&
-            other.lu_key.back() == key.back())
+            other.lu.same_unknowns_and_W(now) &&
+            other.lu.rows_differing_from(now).size() <=
+              max_replaced_rows(unknowns.size()))
           {
-            unsigned int differ = 0;
-            for (unsigned int i = 0; i + 1 < key.size(); ++i)
-              differ += key[i] != other.lu_key[i];
-            if (differ > max_replaced_rows(unknowns.size()))
-              continue;
-            lu_unknowns = other.lu_unknowns;
-            lu_key      = other.lu_key;
-            lu_state    = other.lu_state;
-            factors     = other.factors;
+            lu      = other.lu;
+            factors = other.factors;
             ++counts_.adopted;
             break;
           }
-    const bool kept   = !factors.empty() && unknowns == lu_unknowns;
-    const bool same_W = kept && lu_state == W.state();
-    if (same_W && key == lu_key)
+    const bool kept   = !factors.empty() && unknowns == lu.unknowns;
+    const bool same_W = !factors.empty() && lu.same_unknowns_and_W(now);
+    if (same_W && key == lu.key)
       {
         factors.restore();
         factors.vmult(x, b);
@@ -506,10 +512,10 @@ namespace FuzzyContact
     if (kept)
       for (unsigned int i = 0; i + 1 < key.size(); ++i)
         {
-          if (std::isinf(key[i]) != std::isinf(lu_key[i]) ||
-              (key[i] < 0) != (lu_key[i] < 0))
+          if (std::isinf(key[i]) != std::isinf(lu.key[i]) ||
+              (key[i] < 0) != (lu.key[i] < 0))
             changed.push_back(2 * i + 1);
-          else if (same_W && key[i] != lu_key[i])
+          else if (same_W && key[i] != lu.key[i])
             moved.push_back(2 * i + 1);
         }
     if (changed.size() + moved.size() <= max_replaced_rows(unknowns.size()))
@@ -521,20 +527,19 @@ namespace FuzzyContact
     // last, only the rows whose equation changed are made anew (most
     // iterations of the active-set method change a few nodes).
     std::vector<double> &A = matrix;
-    if (!A.empty() && unknowns == matrix_unknowns &&
-        matrix_state == W.state() && key.back() == matrix_key.back())
-      {
-        std::vector<unsigned int> rows;
-        for (unsigned int i = 0; i + 1 < key.size(); ++i)
-          if (key[i] != matrix_key[i])
-            rows.push_back(2 * i + 1);
-        regather_rows(W, unknowns, status, sign, mu, rigid, scale, rows, A);
-      }
+    if (!A.empty() && assembled.same_unknowns_and_W(now))
+      regather_rows(W,
+                    unknowns,
+                    status,
+                    sign,
+                    mu,
+                    rigid,
+                    scale,
+                    assembled.rows_differing_from(now),
+                    A);
     else
       gather(W, unknowns, status, sign, mu, rigid, scale, A);
-    matrix_unknowns = unknowns;
-    matrix_key      = key;
-    matrix_state    = W.state();
+    assembled = now;
     // If GMRES took more than a few steps, or too many rows changed, the
     // factors are made anew for this system (the next solve, at a
     // neighbouring point or the next iteration, is then close to them
@@ -552,9 +557,7 @@ namespace FuzzyContact
     ++counts_.lu;
     if (!factors.factorise(A, unknowns.size(), 1e-13))
       return answered;
-    lu_unknowns = unknowns;
-    lu_key      = key;
-    lu_state    = W.state();
+    lu = now;
     if (!answered)
       factors.vmult(x, b);
     return true;

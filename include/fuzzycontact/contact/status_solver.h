@@ -193,22 +193,38 @@ namespace FuzzyContact
                   const Vector<double>             &b,
                   Vector<double>                   &x);
 
+    // What a system with friction is made of: its unknowns, its equations
+    // (key: per closed node its tangential one, infinity if the node
+    // sticks, else mu s; then the scale) and W's state. Two systems of the
+    // same unknowns, W and scale differ only in the tangential rows whose
+    // key differs.
+    struct Stamp
+    {
+      Unknowns            unknowns;
+      std::vector<double> key;
+      unsigned long       state = 0;
+      bool
+      same_unknowns_and_W(const Stamp &other) const
+      {
+        return !key.empty() && unknowns == other.unknowns &&
+               state == other.state && key.back() == other.key.back();
+      }
+      /** The tangential rows (2i + 1) whose equation differs from @p
+       * other's (same unknowns). */
+      std::vector<unsigned int>
+      rows_differing_from(const Stamp &other) const;
+    };
+
     ClosedSetFactor factor_;
-    // The dense LU factors of the system with friction of lu_unknowns (its
-    // rows replaced as the statuses change); the equations they were made
-    // for (lu_key: statuses, friction coefficients and scale) and W's
-    // state.
-    Unknowns            lu_unknowns;
-    std::vector<double> lu_key;
-    unsigned long       lu_state = 0;
-    RowUpdatedLU        factors;
-    // The last system with friction assembled, for the unknowns, equations
-    // (as lu_key) and W's state it was assembled for: the next one at the
-    // same unknowns and W changes only the rows whose equation changed.
+    // The dense LU factors of the system with friction (its rows replaced
+    // as the statuses change), and what they were made for.
+    Stamp        lu;
+    RowUpdatedLU factors;
+    // The last system with friction assembled, and what for: the next one
+    // at the same unknowns and W changes only the rows whose equation
+    // changed.
     std::vector<double>              matrix;
-    Unknowns                         matrix_unknowns;
-    std::vector<double>              matrix_key;
-    unsigned long                    matrix_state = 0;
+    Stamp                            assembled;
     Counts                           counts_;
     const std::vector<StatusSolver> *siblings = nullptr;
     // GMRES, made at its first use and kept.
