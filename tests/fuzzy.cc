@@ -479,6 +479,88 @@ TEST(IntervalMethods, KinkedMaximumIsFoundAndReported)
   EXPECT_GT(reference_short, 0.01);
 }
 
+namespace
+{
+  // A largest value whose place jumps, in the manner of a largest nodal
+  // pressure: S = p1 + p2 + p3 + h(p0), h two narrow tents, 0.2 high at
+  // p0 = 0.5 (the core) and 0.5 high at p0 = 0.225, half a width of 0.03
+  // (the box's lower end of p0 steps 0.25, 0.2 between two levels: it
+  // jumps over the second tent's peak).
+  // From the core down the bound follows the first tent; once the box
+  // holds the second, a higher peak lies on the line through the bound
+  // along p0, where no design point of a few per parameter falls with
+  // p1..p3 near their upper ends.
+  const std::vector<FuzzyNumber> two_tents_parameters = {
+    FuzzyNumber::triangular(0, 0.5, 1),
+    FuzzyNumber::triangular(0, 0.5, 1),
+    FuzzyNumber::triangular(0, 0.5, 1),
+    FuzzyNumber::triangular(0, 0.5, 1)};
+
+  double
+  two_tents(const double p0)
+  {
+    return std::max({0.,
+                     0.2 * (1 - std::abs(p0 - 0.5) / 0.03),
+                     0.5 * (1 - std::abs(p0 - 0.225) / 0.03)});
+  }
+
+  std::vector<double>
+  two_tents_response(const std::vector<double> &p)
+  {
+    return {p[1] + p[2] + p[3] + two_tents(p[0])};
+  }
+
+  // h is piecewise linear: its largest value over an interval lies at an
+  // end or at a peak inside.
+  double
+  two_tents_upper(const double alpha)
+  {
+    const auto box = alpha_box(two_tents_parameters, alpha);
+    double     top = std::max(two_tents(box[0].lower), two_tents(box[0].upper));
+    for (const double peak : {0.225, 0.5})
+      if (box[0].contains(peak))
+        top = std::max(top, two_tents(peak));
+    return box[1].upper + box[2].upper + box[3].upper + top;
+  }
+} // namespace
+
+// A chain that met a kink in p0 scans lines through its bound along p0 at
+// the levels below: the higher tent is found at every level whose box
+// holds it, to 1e-6 of the range (the pattern search's refinement step),
+// and the bound says so (scanned, gain). Without the scans (line scan
+// points = 0) the search stays on the first tent, 0.3 short.
+TEST(IntervalMethods, LinesThroughAKinkedBoundFindAPeakTheDesignMisses)
+{
+  const auto alpha = alpha_levels(11);
+  const auto o =
+    OptimisationMethod(closed_form_settings())
+      .bounds(two_tents_parameters, alpha, two_tents_response, {"S"}, self);
+  const double range = two_tents_upper(0) - 0.;
+  bool         moved = false;
+  for (unsigned int l = 0; l < alpha.size(); ++l)
+    {
+      EXPECT_NEAR(o.bounds[0][l].upper, two_tents_upper(alpha[l]), 1e-6 * range)
+        << "alpha = " << alpha[l];
+      const BoundQuality &q = o.upper_quality[0][l];
+      if (q.scan_gain > 0)
+        {
+          moved = true;
+          EXPECT_EQ(q.scanned, std::vector<unsigned int>{0});
+        }
+    }
+  EXPECT_TRUE(moved);
+
+  OptimisationSettings without = closed_form_settings();
+  without.line_scan_points     = 0;
+  const auto stuck = OptimisationMethod(without).bounds(two_tents_parameters,
+                                                        alpha,
+                                                        two_tents_response,
+                                                        {"S"},
+                                                        self);
+  EXPECT_LT(stuck.bounds[0][0].upper, two_tents_upper(0) - 0.2);
+  EXPECT_TRUE(stuck.upper_quality[0][0].scanned.empty());
+}
+
 // The design is a (t, m, d)-net of 2^m points: one in every stratum of
 // every coordinate and, the first two Sobol coordinates being a (0, m,
 // 2)-net, one in every elementary box 2^-a x 2^-(m - a) of them (random
@@ -958,6 +1040,7 @@ TEST(IntervalMethods, OptimisationDefaultsOfTheParameterFileAreTheStructs)
   parsed.global_time_limit      = 1;
   parsed.local_starts           = 9;
   parsed.refinement_step        = 0.01;
+  parsed.line_scan_points       = 3;
   parsed.parse_parameters(prm);
   const OptimisationSettings defaults;
   EXPECT_EQ(parsed.algorithm, defaults.algorithm);
@@ -972,6 +1055,7 @@ TEST(IntervalMethods, OptimisationDefaultsOfTheParameterFileAreTheStructs)
   EXPECT_EQ(parsed.global_time_limit, defaults.global_time_limit);
   EXPECT_EQ(parsed.local_starts, defaults.local_starts);
   EXPECT_EQ(parsed.refinement_step, defaults.refinement_step);
+  EXPECT_EQ(parsed.line_scan_points, defaults.line_scan_points);
   EXPECT_TRUE(defaults.global_points_auto);
   // "global points" takes a number too, and refuses anything else
   prm.enter_subsection("Optimisation");

@@ -48,6 +48,56 @@ namespace FuzzyContact
                const std::vector<VectorType>   &design,
                Progress                        *progress) const
     {
+      std::vector<bool> rough(normalisation.n_free(), false);
+      ChainResult       result =
+        levels(alpha, order, centre, design, progress, rough);
+      if (!unscanned(alpha, order, rough, result))
+        return result;
+      // A kink met at some level was not known at the levels above it (the
+      // first level below the core has none above to tell it): the chain
+      // once more, scanning lines along those parameters from the start.
+      // The cache answers the points evaluated before.
+      result = levels(alpha, order, centre, design, nullptr, rough);
+      result.notes.push_back(
+        what + ": kinks met below the core; every level was searched again, "
+               "scanning lines through its bound along the parameters with "
+               "kinks from the first level on");
+      return result;
+    }
+
+
+    // Levels whose bound was not scanned along a parameter of @p rough in
+    // which its box has a width.
+    bool
+    Chain::unscanned(const std::vector<double>       &alpha,
+                     const std::vector<unsigned int> &order,
+                     const std::vector<bool>         &rough,
+                     const ChainResult               &result) const
+    {
+      if (settings.line_scan_points < 2)
+        return false;
+      for (const unsigned int l : order)
+        {
+          const auto [lo, hi] = normalisation.box(parameters, alpha[l]);
+          const std::vector<unsigned int> &done = result.quality[l].scanned;
+          for (unsigned int j = 0; j < rough.size(); ++j)
+            if (rough[j] && hi[j] > lo[j] &&
+                std::find(done.begin(), done.end(), normalisation.free[j]) ==
+                  done.end())
+              return true;
+        }
+      return false;
+    }
+
+
+    ChainResult
+    Chain::levels(const std::vector<double>       &alpha,
+                  const std::vector<unsigned int> &order,
+                  const VectorType                &centre,
+                  const std::vector<VectorType>   &design,
+                  Progress                        *progress,
+                  std::vector<bool>               &rough) const
+    {
       ChainResult result;
       result.value.resize(alpha.size());
       result.argument.resize(alpha.size());
@@ -140,6 +190,7 @@ namespace FuzzyContact
           objective.gradient_at(best.gradient, best.x);
           refine(here, best, quality);
           compare_basins(here, optima, winner, best, quality, result);
+          scan_lines(here, best, quality, rough, result);
           gradients.push_back(best.gradient);
 
           // Converged only with evidence (BoundQuality::converged).
@@ -292,6 +343,98 @@ namespace FuzzyContact
         {
           objective.gradient_at(best.gradient, best.x);
           shape();
+        }
+    }
+
+
+    // Lines through the bound along the parameters in @p rough (a kink or
+    // an interior optimum met at this level or one above; this bound's are
+    // added): settings.line_scan_points values of each, evenly spaced over
+    // the box, the other parameters kept. A better point moves the bound,
+    // which is refined again (pattern search) and scanned again, at most
+    // four times.
+    void
+    Chain::scan_lines(const Level       &level,
+                      LocalOptimum      &best,
+                      BoundQuality      &quality,
+                      std::vector<bool> &rough,
+                      ChainResult       &result) const
+    {
+      const unsigned int n_values = settings.line_scan_points;
+      if (n_values < 2)
+        return;
+      OutputObjective  &objective = level.objective;
+      const VectorType &lo = level.lo, &hi = level.hi;
+      const auto        mark = [&]() {
+        for (const std::vector<unsigned int> *set :
+             {&quality.kinks, &quality.interior})
+          for (const unsigned int p : *set)
+            {
+              const auto j = std::find(normalisation.free.begin(),
+                                       normalisation.free.end(),
+                                       p);
+              Assert(j != normalisation.free.end(), ExcInternalError());
+              rough[j - normalisation.free.begin()] = true;
+            }
+      };
+      mark();
+      const double start = best.value;
+      for (unsigned int pass = 0; pass < 4; ++pass)
+        {
+          std::vector<VectorType> line;
+          for (unsigned int j = 0; j < rough.size(); ++j)
+            if (rough[j] && hi[j] > lo[j])
+              {
+                if (std::find(quality.scanned.begin(),
+                              quality.scanned.end(),
+                              normalisation.free[j]) == quality.scanned.end())
+                  quality.scanned.push_back(normalisation.free[j]);
+                for (unsigned int k = 0; k < n_values; ++k)
+                  {
+                    VectorType x = best.x;
+                    x[j]         = k + 1 == n_values
+                                     ? hi[j]
+                                     : lo[j] + (hi[j] - lo[j]) * k / (n_values - 1);
+                    line.push_back(x);
+                  }
+              }
+          if (line.empty())
+            return;
+          objective.prefetch(line);
+          const double noise =
+            settings.response_tolerance * std::max(1., std::abs(best.value));
+          double       value  = best.value - noise;
+          unsigned int better = line.size();
+          for (unsigned int i = 0; i < line.size(); ++i)
+            {
+              const double v = objective.at(line[i]);
+              if (v < value)
+                {
+                  value  = v;
+                  better = i;
+                }
+            }
+          if (better == line.size())
+            break;
+          best.x     = line[better];
+          best.value = value;
+          objective.gradient_at(best.gradient, best.x);
+          refine(level, best, quality);
+          mark();
+        }
+      if (best.value < start)
+        {
+          const double range = level.range > 0 ? level.range : 1.;
+          quality.scan_gain  = (start - best.value) / range;
+          std::string along;
+          for (const unsigned int p : quality.scanned)
+            along +=
+              (along.empty() ? "parameter " : ", ") + std::to_string(p + 1);
+          result.notes.push_back(
+            level.name + ": a line through the local searches' optimum along " +
+            along + " found a better point (by " + format(quality.scan_gain) +
+            " of the range): the searches had stopped at a kink; the bound "
+            "moved there and was refined again");
         }
     }
 

@@ -92,6 +92,14 @@ namespace FuzzyContact
                       "The pattern search that refines bounds with interior "
                       "coordinates (kinks) stops when its step falls below "
                       "this fraction of the interval widths.");
+    prm.declare_entry("line scan points",
+                      to_string(defaults.line_scan_points),
+                      Patterns::Integer(0, 4097),
+                      "Values of a parameter on each line scanned through a "
+                      "bound, ends included (0 or 1: no scans): along the "
+                      "parameters in which the search has met a kink or an "
+                      "interior optimum, a better point of the line moves "
+                      "the bound and it is refined again.");
     prm.leave_subsection();
   }
 
@@ -149,6 +157,7 @@ namespace FuzzyContact
       }
     global_time_limit = prm.get_double("global time limit");
     local_starts      = prm.get_integer("local starts");
+    line_scan_points  = prm.get_integer("line scan points");
     refinement_step   = Input::positive(prm.get_double("refinement step"),
                                       "Optimisation: refinement step");
     AssertThrow(refinement_step < 0.1,

@@ -71,6 +71,9 @@ namespace FuzzyContact
       if (q.design_better)
         s << "; a point of the global stage was better than every local "
              "search";
+      if (!q.scanned.empty())
+        s << "; lines through the bound scanned along " << q.scanned.size()
+          << " parameter(s)";
       if (q.refined)
         s << "; the pattern search "
           << (q.search_converged ? "converged" : "stopped at its limits")
@@ -94,13 +97,15 @@ namespace FuzzyContact
     {
       nlohmann::json j;
       j["where"] = q.where;
-      for (const char *key : {"interior", "kinks"})
+      for (const auto &[key, set] : {std::pair{"interior", &q.interior},
+                                     std::pair{"kinks", &q.kinks},
+                                     std::pair{"line_scans", &q.scanned}})
         {
           j[key] = nlohmann::json::array();
-          for (const unsigned int i :
-               std::string(key) == "kinks" ? q.kinks : q.interior)
+          for (const unsigned int i : *set)
             j[key].push_back(p[i].quantity.name);
         }
+      j["scan_gain"]           = q.scan_gain;
       j["projected_gradient"]  = q.projected_gradient;
       j["refined"]             = q.refined;
       j["last_change"]         = q.last_change;

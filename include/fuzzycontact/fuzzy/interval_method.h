@@ -183,6 +183,14 @@ namespace FuzzyContact
     /** The pattern search stopped converged (not at a limit). */
     bool search_converged = false;
     /**
+     * Parameters (indices among all) along which lines through the bound
+     * were scanned (OptimisationSettings::line_scan_points), and how much
+     * better than the local searches' optimum the scans found the bound,
+     * relative to the output's range over the box (0: no better point).
+     */
+    std::vector<unsigned int> scanned;
+    double                    scan_gain = 0;
+    /**
      * The bound is called converged only with evidence: first-order
      * optimal at a vertex (projected gradient 0), or refined by a pattern
      * search that stopped converged; no point of the global stage better
@@ -200,7 +208,7 @@ namespace FuzzyContact
       ar &where &interior &kinks &projected_gradient &refined &last_change
         &final_step &iteration_limit &edge &n_design &n_roots &n_starts &n_agree
           &other_optimum &basins_searched &design_better &search_converged
-            &converged;
+            &scanned &scan_gain &converged;
     }
   };
 

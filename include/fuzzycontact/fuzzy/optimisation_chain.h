@@ -4,7 +4,8 @@
 // the global stage (global_stage.h), local optimisations from the best
 // points of distinct basins (local_optimisation.h), the pattern search
 // where the optimum has interior coordinates or a projected gradient, and
-// the checks for a non-monotone response.
+// the checks for a non-monotone response, and the lines scanned through
+// the bound along the parameters with kinks.
 
 #ifndef fuzzycontact_fuzzy_optimisation_chain_h
 #define fuzzycontact_fuzzy_optimisation_chain_h
@@ -59,7 +60,8 @@ namespace FuzzyContact
       }
 
       // The levels in @p order (from the core down), starting at @p centre,
-      // with the global stage's @p design (in the unit box).
+      // with the global stage's @p design (in the unit box); once more if a
+      // kink met at some level went unscanned at the levels above it.
       ChainResult
       run(const std::vector<double>       &alpha,
           const std::vector<unsigned int> &order,
@@ -79,6 +81,21 @@ namespace FuzzyContact
         const std::string &name;
       };
 
+      // The levels in @p order; @p rough: the free parameters in which a
+      // kink or an interior optimum was met (lines through the bound are
+      // scanned along them), at the start and as the levels find more.
+      ChainResult
+      levels(const std::vector<double>       &alpha,
+             const std::vector<unsigned int> &order,
+             const VectorType                &centre,
+             const std::vector<VectorType>   &design,
+             Progress                        *progress,
+             std::vector<bool>               &rough) const;
+      bool
+      unscanned(const std::vector<double>       &alpha,
+                const std::vector<unsigned int> &order,
+                const std::vector<bool>         &rough,
+                const ChainResult               &result) const;
       std::vector<LocalOptimum>
       local_stage(const Level &level, const Starts &starts) const;
       void
@@ -96,6 +113,12 @@ namespace FuzzyContact
       refine(const Level  &level,
              LocalOptimum &best,
              BoundQuality &quality) const;
+      void
+      scan_lines(const Level       &level,
+                 LocalOptimum      &best,
+                 BoundQuality      &quality,
+                 std::vector<bool> &rough,
+                 ChainResult       &result) const;
       std::string
       iteration_limit_note(const std::string  &level,
                            const BoundQuality &quality) const;

@@ -138,6 +138,17 @@ namespace FuzzyContact
      * widths.
      */
     double refinement_step = 1e-6;
+    /**
+     * Values of a parameter on each line scanned through a bound (evenly
+     * spaced over the box, ends included; 0 or 1: no scans). A chain scans
+     * along the parameters in which it has met a kink or an interior
+     * optimum, at this level or one above: a kinked response (a largest
+     * nodal value whose node changes, a stick-slip transition) has local
+     * optima where the gradient and pattern searches stop, and a line
+     * through the bound finds the better ones a box-filling design of a
+     * few points per parameter misses.
+     */
+    unsigned int line_scan_points = 33;
 
     /** Declares the subsection Optimisation, with the values above. */
     static void
