@@ -42,8 +42,13 @@ message(STATUS "bounds with 1 and 2 processes: ${agreement}")
 # One evaluation cache shared by the ranks: each method evaluates as many
 # distinct points with 2 processes as with one (ranks that repeated each
 # other's work would evaluate about twice as many). The optimisation's
-# path follows round-off differences where a bound lies at a kink (above):
-# its count may differ by up to a tenth.
+# path follows round-off differences: where a bound lies at a kink (above),
+# and because each rank's contact solvers keep their factors from solve to
+# solve (an answer then depends, by round-off, on the solves before it:
+# GMRES on kept factors to 1e-13), so that ROL's finite-difference
+# gradients differ in their last digits (FL2C on prm/column.prm: 750
+# evaluations with one process, 571 with two, the bounds identical). Its
+# count may differ by up to a third.
 string(JSON methods LENGTH "${one}" evaluations)
 math(EXPR last "${methods} - 1")
 foreach(m RANGE ${last})
@@ -52,7 +57,7 @@ foreach(m RANGE ${last})
   string(JSON b GET "${two}" evaluations ${method})
   set(allowed 0)
   if(method STREQUAL "optimisation")
-    math(EXPR allowed "${a} / 10")
+    math(EXPR allowed "${a} / 3")
   endif()
   math(EXPR difference "${a} - ${b}")
   if(difference LESS 0)

@@ -1087,6 +1087,56 @@ TEST(StatusSolver, ALoadStepTakesTheFactorsOfAnotherAtTheSameW)
   EXPECT_EQ(workspace.counts().pseudo_inverse, 0u);
 }
 
+// FL2C given a workspace (a study's points): its coarse correction is
+// posed on every node a working set held and keeps the factors of its
+// linear systems from point to point. Eight neighbouring points of a
+// frictional problem of 40 nodes (load factors 1, 1.001, ...): after the
+// first point the coarse correction makes no new LU, where without the
+// workspace every correction makes its own; FL2C's answers agree with the
+// exact solver's to 1e-9 of the largest force either way.
+TEST(FL2C, TheCoarseCorrectionKeepsItsFactorsInAWorkspace)
+{
+  const unsigned int  n_nodes = 40, n = 2 * n_nodes;
+  std::vector<double> g(n);
+  for (unsigned int k = 0; k < n_nodes; ++k)
+    {
+      g[2 * k]     = k % 5 == 0 ? 1e-5 : -1e-5 * (1 + 0.5 * std::sin(1. * k));
+      g[2 * k + 1] = 3e-6 * std::cos(1.3 * k);
+    }
+  const ContactProblem problem =
+    small_problem(random_flexibility(n, 11), g, 0.3);
+  FL2CParameters parameters;
+  parameters.tolerance = 1e-10;
+  const FL2CSolver fl2c(parameters);
+  ContactWorkspace workspace;
+  double           worst    = 0;
+  unsigned long    lu_first = 0;
+  for (unsigned int j = 0; j < 8; ++j)
+    {
+      const double       factor = 1 + 1e-3 * j;
+      const ContactState exact =
+        ActiveSetSolver().solve(problem, factor, 1, "test");
+      workspace.start = workspace.converged;
+      const ContactState kept =
+        fl2c.solve(problem, factor, 1, "test", &workspace);
+      const ContactState alone = fl2c.solve(problem, factor, 1, "test");
+      Vector<double>     d     = kept.p;
+      d -= exact.p;
+      worst = std::max(worst, d.linfty_norm() / exact.p.linfty_norm());
+      d     = alone.p;
+      d -= exact.p;
+      worst = std::max(worst, d.linfty_norm() / exact.p.linfty_norm());
+      if (j == 0)
+        lu_first = workspace.coarse(n_nodes).workspace->counts().lu;
+    }
+  const StatusSolver::Counts counts =
+    workspace.coarse(n_nodes).workspace->counts();
+  EXPECT_GT(lu_first, 0u);
+  EXPECT_EQ(counts.lu, lu_first);
+  EXPECT_GT(counts.solves, 8u);
+  EXPECT_LE(worst, 1e-9);
+}
+
 // Distributed contact with a small iteration limit: 20 nodes that all
 // close, max iterations = 5. The frictionless start closes one node per
 // iteration, so it has its own limit (3 per node), and the active set

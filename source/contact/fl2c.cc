@@ -1,5 +1,6 @@
 #include <fuzzycontact/base/input.h>
 #include <fuzzycontact/contact/active_set_solver.h>
+#include <fuzzycontact/contact/contact_workspace.h>
 #include <fuzzycontact/contact/fl2c.h>
 
 #include <deal.II/base/exceptions.h>
@@ -86,16 +87,22 @@ namespace FuzzyContact
     };
 
 
-    // W restricted to some of its rows (two per node of FL2C's working
-    // set), the problem of the coarse correction.
+    // W restricted to some of its rows (two per node of the coarse
+    // correction's nodes), the problem of the coarse correction. With
+    // @p lasting, rows that only ever grow by appending (a workspace's
+    // coarse nodes): then the restriction has W's state, so that factors
+    // made for it at this W serve the next, larger one.
     class RestrictedFlexibility : public FlexibilityOperator
     {
     public:
       RestrictedFlexibility(FlexibilityOperator             &W,
-                            const std::vector<unsigned int> &rows)
+                            const std::vector<unsigned int> &rows,
+                            const bool                       lasting)
           : W(W)
           , rows(rows)
       {
+        if (lasting)
+          restored(W.state());
       }
 
       unsigned int
@@ -176,6 +183,8 @@ namespace FuzzyContact
           , mu(mu)
           , what(what)
           , n(mu.size())
+          , coarse(step.workspace != nullptr ? &step.workspace->coarse(n)
+                                             : nullptr)
           , in_working(n, false)
           , c_n([this](const unsigned int k) {
             return 1. / this->W.diagonal(normal_row(k));
@@ -208,6 +217,19 @@ namespace FuzzyContact
           state.rigid.reinit(step.n_motions());
         state.status.assign(n, ContactStatus::open);
         state.slip_sign.assign(n, 0);
+        if (&from == step.start && from.status.size() == n &&
+            from.slip_sign.size() == n)
+          {
+            exact_status = from.status;
+            exact_sign   = from.slip_sign;
+            exact_known.assign(n, true);
+          }
+        else
+          {
+            exact_status.assign(n, ContactStatus::open);
+            exact_sign.assign(n, 0);
+            exact_known.assign(n, false);
+          }
         AssertThrow(corrected || step.n_motions() == 0,
                     ExcMessage(what + ": a body held by contact alone needs "
                                       "FL2C's coarse correction (the "
@@ -496,11 +518,30 @@ namespace FuzzyContact
 
       // 2. The exact reduced solver on the working set, warm-started from
       // the statuses of the regulators' forces (cold, by its frictionless
-      // start, if that fails).
+      // start, if that fails). With a workspace it is posed on the
+      // workspace's coarse nodes, every node a working set held (the
+      // working set's join them): the open ones are solved as open, and
+      // the factors of its linear systems are kept from one correction,
+      // load step and solve to the next (contact_workspace.h).
       void
       coarse_correction()
       {
-        const unsigned int  s = working.size();
+        if (coarse != nullptr)
+          for (const unsigned int k : working)
+            if (coarse->place[k] < 0)
+              {
+                coarse->place[k] = coarse->nodes.size();
+                coarse->nodes.push_back(k);
+              }
+        const std::vector<unsigned int> &nodes =
+          coarse != nullptr ? coarse->nodes : working;
+        std::vector<unsigned int> local_rows;
+        for (const unsigned int k : nodes)
+          {
+            local_rows.push_back(normal_row(k));
+            local_rows.push_back(tangential_row(k));
+          }
+        const unsigned int  s = nodes.size();
         LoadStep            local;
         std::vector<double> local_mu(s);
         local.step        = step.step;
@@ -511,32 +552,43 @@ namespace FuzzyContact
         local.previous.slip_sign.assign(s, 0);
         for (unsigned int i = 0; i < 2 * s; ++i)
           {
-            local.g_free[i]     = step.g_free[rows[i]];
-            local.g_previous[i] = step.g_previous[rows[i]];
+            local.g_free[i]     = step.g_free[local_rows[i]];
+            local.g_previous[i] = step.g_previous[local_rows[i]];
           }
+        bool exact_start = false;
         for (unsigned int i = 0; i < s; ++i)
           {
-            const unsigned int k        = working[i];
+            const unsigned int k        = nodes[i];
             local_mu[i]                 = mu[k];
             const auto [status, sign]   = status_of(state.p[normal_row(k)],
                                                   state.p[tangential_row(k)],
                                                   mu[k]);
-            local.previous.status[i]    = status;
-            local.previous.slip_sign[i] = sign;
+            const bool known            = exact_known[k];
+            exact_start                 = exact_start || known;
+            local.previous.status[i]    = known ? exact_status[k] : status;
+            local.previous.slip_sign[i] = known ? exact_sign[k] : sign;
           }
-        const RigidMotions rigid =
-          step.n_motions() > 0 ? step.rigid->restricted(rows) : RigidMotions();
+        const RigidMotions rigid = step.n_motions() > 0
+                                     ? step.rigid->restricted(local_rows)
+                                     : RigidMotions();
         if (step.n_motions() > 0)
           {
             local.rigid          = &rigid;
             local.rigid_load     = step.rigid_load;
             local.previous.rigid = state.rigid;
           }
-        RestrictedFlexibility restricted(W, rows);
+        if (coarse != nullptr)
+          local.workspace = coarse->workspace.get();
+        RestrictedFlexibility restricted(W, local_rows, coarse != nullptr);
         ContactState          solved;
         try
           {
-            solved = warm.solve(restricted, local, local_mu, what);
+            // Started from exact statuses (a neighbouring point's, an
+            // earlier correction's) the solver may take as many iterations
+            // as the exact reduced solver would from there; from the
+            // regulators' statuses only a few.
+            solved = (exact_start ? cold : warm)
+                       .solve(restricted, local, local_mu, what);
           }
         catch (const ExceptionBase &)
           {
@@ -560,10 +612,21 @@ namespace FuzzyContact
           }
         for (unsigned int i = 0; i < 2 * s; ++i)
           {
-            state.p[rows[i]] = solved.p[i];
-            state.g[rows[i]] = solved.g[i];
+            state.p[local_rows[i]] = solved.p[i];
+            state.g[local_rows[i]] = solved.g[i];
+          }
+        for (unsigned int i = 0; i < s; ++i)
+          {
+            exact_status[nodes[i]] = solved.status[i];
+            exact_sign[nodes[i]]   = solved.slip_sign[i];
+            exact_known[nodes[i]]  = true;
           }
         state.rigid = solved.rigid;
+        // Coarse nodes outside the working set that the correction closed
+        // carry forces: they join it.
+        for (const unsigned int k : nodes)
+          if (state.p[normal_row(k)] != 0 || state.p[tangential_row(k)] != 0)
+            join(k);
         prune();
       }
 
@@ -579,13 +642,25 @@ namespace FuzzyContact
         return message.str();
       }
 
-      const FL2CParameters                     &parameters;
-      const bool                                corrected;
-      FlexibilityOperator                      &W;
-      const LoadStep                           &step;
-      const std::vector<double>                &mu;
-      const std::string                        &what;
-      const unsigned int                        n;
+      const FL2CParameters      &parameters;
+      const bool                 corrected;
+      FlexibilityOperator       &W;
+      const LoadStep            &step;
+      const std::vector<double> &mu;
+      const std::string         &what;
+      const unsigned int         n;
+      ContactWorkspace::Coarse  *coarse;
+      // The statuses of the last exact answer of this step (the start's,
+      // then the coarse corrections'): the coarse correction starts from
+      // them where a node has one (known), from the regulators' forces
+      // elsewhere.
+      // The regulators leave a slipping node's friction force a little
+      // inside the cone, which reads as sticking: started from there, the
+      // exact solver would turn every slipping node back, each time, on new
+      // factors.
+      std::vector<ContactStatus>                exact_status;
+      std::vector<int>                          exact_sign;
+      std::vector<bool>                         exact_known;
       std::vector<bool>                         in_working;
       std::vector<unsigned int>                 working, rows;
       const std::function<double(unsigned int)> c_n, c_t;

@@ -24,6 +24,7 @@
 #include <fuzzycontact/contact/contact_problem.h>
 #include <fuzzycontact/contact/status_solver.h>
 
+#include <memory>
 #include <vector>
 
 namespace FuzzyContact
@@ -56,15 +57,47 @@ namespace FuzzyContact
         sum += s.counts();
       return sum;
     }
+    /**
+     * FL2C's coarse correction (fl2c.h) carries its own exact problem from
+     * correction to correction and from solve to solve: the slave nodes it
+     * is posed on (every node that any working set held, of any load step,
+     * in the order they came, so that a node keeps its place and the
+     * factors of W restricted to them stay factors of the next, larger
+     * restriction) and that problem's workspace.
+     */
+    struct Coarse
+    {
+      std::vector<unsigned int> nodes;
+      /** Per slave node, its place in nodes (-1: none). */
+      std::vector<int>                  place;
+      std::unique_ptr<ContactWorkspace> workspace;
+    };
+
+    /** The coarse correction's problem, for a problem of @p n_nodes slave
+     * nodes (made anew for another number). */
+    Coarse &
+    coarse(const unsigned int n_nodes)
+    {
+      if (!coarse_ || coarse_->place.size() != n_nodes)
+        {
+          coarse_ = std::make_unique<Coarse>();
+          coarse_->place.assign(n_nodes, -1);
+          coarse_->workspace = std::make_unique<ContactWorkspace>();
+        }
+      return *coarse_;
+    }
+
     /** Forgets every factor. */
     void
     clear()
     {
       solvers.clear();
+      coarse_.reset();
     }
 
   private:
     std::vector<StatusSolver> solvers;
+    std::unique_ptr<Coarse>   coarse_;
   };
 } // namespace FuzzyContact
 

@@ -24,7 +24,17 @@
 //      where many closed nodes have nearly equal columns of W (`stacked`:
 //      thousands of sweeps, growing with the mesh); the correction removes
 //      that error at once, so that the number of sweeps does not grow with
-//      the mesh. coarse correction = none keeps the paper's sweeps alone;
+//      the mesh. coarse correction = none keeps the paper's sweeps alone.
+//      Given a ContactWorkspace (a study's reduced model), the correction
+//      is posed on every node that a working set held (the workspace's
+//      coarse nodes, which only grow: the open ones are solved as open),
+//      so that its linear systems keep their factors from correction to
+//      correction, load step to load step and point to point, as the
+//      exact reduced solver's do; and where the step's start came from a
+//      neighbouring point (or an earlier correction of the same step) the
+//      correction starts from those exact statuses, with the exact
+//      solver's full iteration limit, instead of the regulators' (which
+//      leave a slipping node's friction a little inside the cone);
 //   3. test: the complementarity residual (contact_problem.h) of the
 //      working set; when it is at most the tolerance, the gaps of all m
 //      rows are recomputed from the columns of the loaded nodes (O(m) per
@@ -108,7 +118,8 @@ namespace FuzzyContact
     unsigned int max_iterations = 20000;
     /**
      * Iterations of the coarse correction's exact solver from the
-     * regulators' statuses, and started cold (then it gives up).
+     * regulators' statuses, and started cold or from exact statuses (then
+     * it gives up).
      */
     unsigned int coarse_warm_iterations = 2;
     unsigned int coarse_max_iterations  = 200;
