@@ -23,108 +23,127 @@ namespace FuzzyContact
     // tangential one, a row of W if it sticks, W_tt (p_t - mu s p_n) = 0 if
     // it slips; the free motions' columns and equilibrium rows scaled by
     // @p scale, as in StatusSystem.
-    void
-    gather(FlexibilityOperator              &W,
-           const StatusSolver::Unknowns     &unknowns,
-           const std::vector<ContactStatus> &status,
-           const std::vector<int>           &sign,
-           const std::vector<double>        &mu,
-           const RigidMotions               *rigid,
-           const double                      scale,
-           std::vector<double>              &A)
+    class DenseSystem
     {
-      const std::vector<unsigned int> &closed = unknowns.closed;
-      const unsigned int n_c = closed.size(), m = 2 * n_c, N = unknowns.size();
-      A.assign(std::size_t(N) * N, 0.);
-      // Unknown c's row of W, or -1 where the equation is not W's.
-      std::vector<int> rows(m);
-      for (unsigned int i = 0; i < n_c; ++i)
-        {
-          const unsigned int k = closed[i];
-          rows[2 * i]          = normal_row(k);
-          rows[2 * i + 1] =
-            status[k] == ContactStatus::stick ? int(tangential_row(k)) : -1;
-        }
-      for (unsigned int c = 0; c < m; ++c)
-        {
-          const double *w =
-            W.column(c % 2 == 0 ? normal_row(closed[c / 2])
-                                : tangential_row(closed[c / 2]));
-          double *column = &A[std::size_t(c) * N];
-          for (unsigned int r = 0; r < m; ++r)
-            if (rows[r] >= 0)
-              column[r] = w[rows[r]];
-        }
-      for (unsigned int i = 0; i < n_c; ++i)
-        if (rows[2 * i + 1] < 0)
-          {
-            const unsigned int k = closed[i];
-            const double       d = W.diagonal(tangential_row(k));
-            A[std::size_t(2 * i + 1) * N + 2 * i + 1] = d;
-            A[std::size_t(2 * i) * N + 2 * i + 1]     = -d * mu[k] * sign[k];
-          }
-      if (unknowns.n_motions == 0)
-        return;
-      const FullMatrix<double> &G = rigid->gaps;
-      for (unsigned int j = 0; j < unknowns.n_motions; ++j)
-        {
-          double *column = &A[std::size_t(m + j) * N];
-          for (unsigned int r = 0; r < m; ++r)
-            if (rows[r] >= 0)
-              column[r] = scale * G(rows[r], j);
-          for (unsigned int c = 0; c < m; ++c)
-            A[std::size_t(c) * N + m + j] =
-              scale * G(c % 2 == 0 ? normal_row(closed[c / 2])
-                                   : tangential_row(closed[c / 2]),
-                        j);
-        }
-    }
-
-    // The rows @p rows (the tangential equations 2i + 1 of closed nodes
-    // whose status or friction coefficient changed) of a matrix @p A that
-    // gather() assembled for the same unknowns, W and scale, made anew for
-    // the statuses now. W is symmetric, so the row of W that a sticking
-    // node's equation needs is its column: one column per row, instead of
-    // all of them.
-    void
-    regather_rows(FlexibilityOperator              &W,
+    public:
+      DenseSystem(FlexibilityOperator              &W,
                   const StatusSolver::Unknowns     &unknowns,
                   const std::vector<ContactStatus> &status,
                   const std::vector<int>           &sign,
                   const std::vector<double>        &mu,
                   const RigidMotions               *rigid,
-                  const double                      scale,
-                  const std::vector<unsigned int>  &rows,
-                  std::vector<double>              &A)
-    {
-      const std::vector<unsigned int> &closed = unknowns.closed;
-      const unsigned int n_c = closed.size(), m = 2 * n_c, N = unknowns.size();
-      AssertDimension(A.size(), std::size_t(N) * N);
-      for (const unsigned int r : rows)
-        {
-          Assert(r % 2 == 1 && r < m, ExcInternalError());
-          const unsigned int k = closed[r / 2];
-          if (status[k] == ContactStatus::stick)
-            {
-              const double *w = W.column(tangential_row(k));
-              for (unsigned int c = 0; c < m; ++c)
-                A[std::size_t(c) * N + r] =
-                  w[c % 2 == 0 ? normal_row(closed[c / 2])
-                               : tangential_row(closed[c / 2])];
-              for (unsigned int j = 0; j < unknowns.n_motions; ++j)
-                A[std::size_t(m + j) * N + r] =
-                  scale * rigid->gaps(tangential_row(k), j);
-            }
-          else
-            {
-              for (unsigned int c = 0; c < N; ++c)
-                A[std::size_t(c) * N + r] = 0;
-              const double d                = W.diagonal(tangential_row(k));
-              A[std::size_t(r) * N + r]     = d;
-              A[std::size_t(r - 1) * N + r] = -d * mu[k] * sign[k];
-            }
-        }
-    }
+                  const double                      scale)
+          : W(W)
+          , unknowns(unknowns)
+          , closed(unknowns.closed)
+          , status(status)
+          , sign(sign)
+          , mu(mu)
+          , rigid(rigid)
+          , scale(scale)
+          , m(2 * closed.size())
+          , N(unknowns.size())
+      {
+      }
+
+      // The whole matrix.
+      void
+      gather(std::vector<double> &A) const
+      {
+        A.assign(std::size_t(N) * N, 0.);
+        // Unknown c's row of W, or -1 where the equation is not W's.
+        std::vector<int> rows(m);
+        for (unsigned int c = 0; c < m; ++c)
+          rows[c] = c % 2 == 0 || status[closed[c / 2]] == ContactStatus::stick
+                      ? int(row_of_W(c))
+                      : -1;
+        for (unsigned int c = 0; c < m; ++c)
+          {
+            const double *w      = W.column(row_of_W(c));
+            double       *column = &A[std::size_t(c) * N];
+            for (unsigned int r = 0; r < m; ++r)
+              if (rows[r] >= 0)
+                column[r] = w[rows[r]];
+          }
+        for (unsigned int r = 1; r < m; r += 2)
+          if (rows[r] < 0)
+            slip_row(r, A);
+        if (unknowns.n_motions == 0)
+          return;
+        const FullMatrix<double> &G = rigid->gaps;
+        for (unsigned int j = 0; j < unknowns.n_motions; ++j)
+          {
+            double *column = &A[std::size_t(m + j) * N];
+            for (unsigned int r = 0; r < m; ++r)
+              if (rows[r] >= 0)
+                column[r] = scale * G(rows[r], j);
+            for (unsigned int c = 0; c < m; ++c)
+              A[std::size_t(c) * N + m + j] = scale * G(row_of_W(c), j);
+          }
+      }
+
+      // The rows @p rows (the tangential equations 2i + 1 of closed nodes
+      // whose status or friction coefficient changed) of a matrix @p A
+      // that gather() assembled for the same unknowns, W and scale, made
+      // anew for the statuses now. W is symmetric, so the row of W that a
+      // sticking node's equation needs is its column: one column per row,
+      // instead of all of them.
+      void
+      regather(const std::vector<unsigned int> &rows,
+               std::vector<double>             &A) const
+      {
+        AssertDimension(A.size(), std::size_t(N) * N);
+        for (const unsigned int r : rows)
+          {
+            Assert(r % 2 == 1 && r < m, ExcInternalError());
+            if (status[closed[r / 2]] == ContactStatus::stick)
+              {
+                const double *w = W.column(row_of_W(r));
+                for (unsigned int c = 0; c < m; ++c)
+                  A[std::size_t(c) * N + r] = w[row_of_W(c)];
+                for (unsigned int j = 0; j < unknowns.n_motions; ++j)
+                  A[std::size_t(m + j) * N + r] =
+                    scale * rigid->gaps(row_of_W(r), j);
+              }
+            else
+              {
+                for (unsigned int c = 0; c < N; ++c)
+                  A[std::size_t(c) * N + r] = 0;
+                slip_row(r, A);
+              }
+          }
+      }
+
+    private:
+      // The row of W of unknown c < m (p_n or p_t of a closed node).
+      unsigned int
+      row_of_W(const unsigned int c) const
+      {
+        return c % 2 == 0 ? normal_row(closed[c / 2])
+                          : tangential_row(closed[c / 2]);
+      }
+
+      // A slipping node's tangential equation (row r = 2i + 1, zero
+      // elsewhere): W_tt (p_t - mu s p_n) = 0.
+      void
+      slip_row(const unsigned int r, std::vector<double> &A) const
+      {
+        const unsigned int k          = closed[r / 2];
+        const double       d          = W.diagonal(tangential_row(k));
+        A[std::size_t(r) * N + r]     = d;
+        A[std::size_t(r - 1) * N + r] = -d * mu[k] * sign[k];
+      }
+
+      FlexibilityOperator              &W;
+      const StatusSolver::Unknowns     &unknowns;
+      const std::vector<unsigned int>  &closed;
+      const std::vector<ContactStatus> &status;
+      const std::vector<int>           &sign;
+      const std::vector<double>        &mu;
+      const RigidMotions               *rigid;
+      const double                      scale;
+      const unsigned int                m, N;
+    };
 
     // A dense column-major matrix for GMRES.
     class DenseOperator
@@ -527,18 +546,11 @@ namespace FuzzyContact
     // last, only the rows whose equation changed are made anew (most
     // iterations of the active-set method change a few nodes).
     std::vector<double> &A = matrix;
+    const DenseSystem    system(W, unknowns, status, sign, mu, rigid, scale);
     if (!A.empty() && assembled.same_unknowns_and_W(now))
-      regather_rows(W,
-                    unknowns,
-                    status,
-                    sign,
-                    mu,
-                    rigid,
-                    scale,
-                    assembled.rows_differing_from(now),
-                    A);
+      system.regather(assembled.rows_differing_from(now), A);
     else
-      gather(W, unknowns, status, sign, mu, rigid, scale, A);
+      system.gather(A);
     assembled = now;
     // If GMRES took more than a few steps, or too many rows changed, the
     // factors are made anew for this system (the next solve, at a
