@@ -12,56 +12,118 @@
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <vector>
 
 namespace FuzzyContact
 {
   namespace
   {
-    // x >= 0 minimising |A x - b| (A: rows x columns, few rows), by Lawson
-    // and Hanson's NNLS; the least-squares solves on the passive set by the
-    // pseudo-inverse.
-    Vector<double>
-    nonnegative_least_squares(const FullMatrix<double> &A,
-                              const Vector<double>     &b)
+    // A few rows (the free motions), many columns (the cones' edges),
+    // stored column after column.
+    struct EdgeMatrix
     {
-      const unsigned int m = A.m(), n = A.n();
-      Vector<double>     x(n);
-      std::vector<bool>  passive(n, false);
-      const auto         residual = [&](const Vector<double> &y) {
-        Vector<double> r(b);
+      unsigned int        m = 0, n = 0;
+      std::vector<double> entries;
+
+      const double *
+      column(const unsigned int j) const
+      {
+        return &entries[j * m];
+      }
+    };
+
+    // z on the passive set P: argmin |A_P z - b|, by a QR factorisation of
+    // A_P (Gram-Schmidt twice: A has a few rows, so that the solve costs
+    // next to nothing; a study checks every evaluation), or by the
+    // pseudo-inverse (SVD) where A_P's columns are close to dependent (a
+    // column keeps less than 1e-6 of its norm).
+    void
+    passive_solution(const EdgeMatrix                &A,
+                     const Vector<double>            &b,
+                     const std::vector<unsigned int> &P,
+                     std::vector<double>             &z)
+    {
+      const unsigned int m = A.m, k = P.size();
+      std::fill(z.begin(), z.end(), 0.);
+      std::vector<double> Q(m * k), R(k * k, 0.);
+      bool                independent = k <= m;
+      for (unsigned int c = 0; c < k && independent; ++c)
+        {
+          double *q = &Q[c * m];
+          std::copy(A.column(P[c]), A.column(P[c]) + m, q);
+          double norm0 = 0;
+          for (unsigned int i = 0; i < m; ++i)
+            norm0 += q[i] * q[i];
+          for (unsigned int pass = 0; pass < 2; ++pass)
+            for (unsigned int d = 0; d < c; ++d)
+              {
+                const double *qd = &Q[d * m];
+                double        h  = 0;
+                for (unsigned int i = 0; i < m; ++i)
+                  h += qd[i] * q[i];
+                R[d * k + c] += h;
+                for (unsigned int i = 0; i < m; ++i)
+                  q[i] -= h * qd[i];
+              }
+          double norm = 0;
+          for (unsigned int i = 0; i < m; ++i)
+            norm += q[i] * q[i];
+          independent  = norm0 > 0 && norm > 1e-12 * norm0;
+          norm         = std::sqrt(norm);
+          R[c * k + c] = norm;
+          for (unsigned int i = 0; i < m; ++i)
+            q[i] /= norm;
+        }
+      if (independent)
+        {
+          for (unsigned int c = k; c-- > 0;)
+            {
+              double v = 0;
+              for (unsigned int i = 0; i < m; ++i)
+                v += Q[c * m + i] * b[i];
+              for (unsigned int d = c + 1; d < k; ++d)
+                v -= R[c * k + d] * z[P[d]];
+              z[P[c]] = v / R[c * k + c];
+            }
+          return;
+        }
+      LAPACKFullMatrix<double> AP(m, k);
+      for (unsigned int c = 0; c < k; ++c)
         for (unsigned int i = 0; i < m; ++i)
-          for (unsigned int j = 0; j < n; ++j)
-            r[i] -= A(i, j) * y[j];
-        return r;
-      };
-      // z on the passive set: argmin |A_P z - b|.
-      const auto passive_solution = [&]() {
-        std::vector<unsigned int> P;
-        for (unsigned int j = 0; j < n; ++j)
-          if (passive[j])
-            P.push_back(j);
-        LAPACKFullMatrix<double> AP(m, P.size());
-        for (unsigned int i = 0; i < m; ++i)
-          for (unsigned int c = 0; c < P.size(); ++c)
-            AP(i, c) = A(i, P[c]);
-        AP.compute_inverse_svd(1e-13);
-        Vector<double> zP(P.size()), z(n);
-        AP.vmult(zP, b);
-        for (unsigned int c = 0; c < P.size(); ++c)
-          z[P[c]] = zP[c];
-        return z;
-      };
+          AP(i, c) = A.column(P[c])[i];
+      AP.compute_inverse_svd(1e-13);
+      Vector<double> zP(k);
+      AP.vmult(zP, b);
+      for (unsigned int c = 0; c < k; ++c)
+        z[P[c]] = zP[c];
+    }
+
+    // x >= 0 minimising |A x - b| (A: rows x columns, few rows), by Lawson
+    // and Hanson's NNLS.
+    std::vector<double>
+    nonnegative_least_squares(const EdgeMatrix &A, const Vector<double> &b)
+    {
+      const unsigned int        m = A.m, n = A.n;
+      std::vector<double>       x(n, 0.), z(n, 0.), r(m);
+      std::vector<bool>         passive(n, false);
+      std::vector<unsigned int> P;
+      const double              w_floor = 1e-14 * (b.l2_norm() + 1e-300);
       for (unsigned int outer = 0; outer < 3 * n + 10; ++outer)
         {
-          const Vector<double> r      = residual(x);
-          int                  best   = -1;
-          double               w_best = 1e-14 * (b.l2_norm() + 1e-300);
+          for (unsigned int i = 0; i < m; ++i)
+            r[i] = b[i];
+          for (const unsigned int j : P)
+            for (unsigned int i = 0; i < m; ++i)
+              r[i] -= A.column(j)[i] * x[j];
+          int    best   = -1;
+          double w_best = w_floor;
           for (unsigned int j = 0; j < n; ++j)
             if (!passive[j])
               {
-                double w = 0;
+                const double *a = A.column(j);
+                double        w = 0;
                 for (unsigned int i = 0; i < m; ++i)
-                  w += A(i, j) * r[i];
+                  w += a[i] * r[i];
                 if (w > w_best)
                   {
                     w_best = w;
@@ -71,23 +133,28 @@ namespace FuzzyContact
           if (best < 0)
             break;
           passive[best] = true;
+          P.push_back(best);
           for (unsigned int inner = 0; inner < 3 * n + 10; ++inner)
             {
-              const Vector<double> z    = passive_solution();
-              double               step = 1;
-              for (unsigned int j = 0; j < n; ++j)
-                if (passive[j] && z[j] <= 0)
+              passive_solution(A, b, P, z);
+              double step = 1;
+              for (const unsigned int j : P)
+                if (z[j] <= 0)
                   step = std::min(step, x[j] / (x[j] - z[j]));
-              for (unsigned int j = 0; j < n; ++j)
+              for (const unsigned int j : P)
                 x[j] += step * (z[j] - x[j]);
               if (step == 1)
                 break;
-              for (unsigned int j = 0; j < n; ++j)
-                if (passive[j] && x[j] <= 0)
+              std::vector<unsigned int> kept;
+              for (const unsigned int j : P)
+                if (x[j] <= 0)
                   {
                     passive[j] = false;
                     x[j]       = 0;
                   }
+                else
+                  kept.push_back(j);
+              P.swap(kept);
             }
         }
       return x;
@@ -118,42 +185,47 @@ namespace FuzzyContact
       unsigned int node;
       double       t, norm;
     };
-    std::vector<Edge>                edges;
-    std::vector<std::vector<double>> columns;
+    std::vector<Edge> edges;
+    edges.reserve(2 * mu.size());
+    EdgeMatrix A;
+    A.m = r;
+    A.entries.reserve(2 * mu.size() * r);
     for (unsigned int k = 0; k < mu.size(); ++k)
       for (const double t : {1., -1.})
         {
           if (t < 0 && mu[k] == 0)
             continue;
-          std::vector<double> a(r);
-          double              norm = 0;
+          const std::size_t start = A.entries.size();
+          double            norm  = 0;
           for (unsigned int j = 0; j < r; ++j)
             {
-              a[j] = G(normal_row(k), j) + t * mu[k] * G(tangential_row(k), j);
-              norm += a[j] * a[j];
+              const double a =
+                G(normal_row(k), j) + t * mu[k] * G(tangential_row(k), j);
+              A.entries.push_back(a);
+              norm += a * a;
             }
           if (norm == 0)
-            continue;
+            {
+              A.entries.resize(start);
+              continue;
+            }
           norm = std::sqrt(norm);
-          for (double &e : a)
-            e /= norm;
+          for (std::size_t e = start; e < A.entries.size(); ++e)
+            A.entries[e] /= norm;
           edges.push_back(Edge{k, t, norm});
-          columns.push_back(std::move(a));
         }
-    FullMatrix<double> A(r, edges.size());
+    A.n                           = edges.size();
+    const std::vector<double> q   = nonnegative_least_squares(A, b);
+    Vector<double>            gap = b;
     for (unsigned int c = 0; c < edges.size(); ++c)
-      for (unsigned int j = 0; j < r; ++j)
-        A(j, c) = columns[c][j];
-    const Vector<double> q   = nonnegative_least_squares(A, b);
-    Vector<double>       gap = b;
-    for (unsigned int c = 0; c < edges.size(); ++c)
-      {
-        for (unsigned int j = 0; j < r; ++j)
-          gap[j] -= A(j, c) * q[c];
-        const unsigned int k = edges[c].node;
-        p[normal_row(k)] += q[c] / edges[c].norm;
-        p[tangential_row(k)] += edges[c].t * mu[k] * q[c] / edges[c].norm;
-      }
+      if (q[c] != 0)
+        {
+          for (unsigned int j = 0; j < r; ++j)
+            gap[j] -= A.column(c)[j] * q[c];
+          const unsigned int k = edges[c].node;
+          p[normal_row(k)] += q[c] / edges[c].norm;
+          p[tangential_row(k)] += edges[c].t * mu[k] * q[c] / edges[c].norm;
+        }
     if (unbalanced != nullptr)
       *unbalanced = gap.l2_norm() / b.l2_norm();
     return gap.l2_norm() <= 1e-8 * b.l2_norm();
