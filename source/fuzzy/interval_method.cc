@@ -10,6 +10,7 @@
 #include <boost/serialization/vector.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <set>
 
@@ -34,6 +35,25 @@ namespace FuzzyContact
           return {std::string("the evaluation failed: ") + e.what(), {}};
         }
     }
+
+    // Adds the wall time of its life to @p seconds (also when the response
+    // throws).
+    struct StopWatch
+    {
+      explicit StopWatch(double &seconds)
+          : seconds(seconds)
+          , start(std::chrono::steady_clock::now())
+      {
+      }
+      ~StopWatch()
+      {
+        seconds += std::chrono::duration<double>(
+                     std::chrono::steady_clock::now() - start)
+                     .count();
+      }
+      double                               &seconds;
+      std::chrono::steady_clock::time_point start;
+    };
 
     // Rethrows a failure of evaluate() (on every rank, when shared).
     void
@@ -136,8 +156,24 @@ namespace FuzzyContact
                   const MPI_Comm                  comm,
                   const MPI_Comm                  solving)
   {
+    // The time inside the response, apart from the method's own work.
+    double         inside = 0;
+    const Response timed  = [&](const std::vector<double> &p) {
+      const StopWatch watch(inside);
+      return response(p);
+    };
+    const auto summed = [&](const MPI_Comm on) {
+      return dealii::Utilities::MPI::job_supports_mpi()
+               ? dealii::Utilities::MPI::sum(inside, on)
+               : inside;
+    };
     if (solving == comm)
-      return method.bounds(parameters, alpha, response, output_names, comm);
+      {
+        FuzzyOutputBounds result =
+          method.bounds(parameters, alpha, timed, output_names, comm);
+        result.evaluation_time = summed(comm);
+        return result;
+      }
     // The lowest rank of @p comm among the solving ones sends the bounds.
     const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
     const unsigned int rank    = dealii::Utilities::MPI::this_mpi_process(comm);
@@ -148,8 +184,10 @@ namespace FuzzyContact
                 dealii::ExcMessage("No MPI rank can evaluate the response."));
     FuzzyOutputBounds result;
     if (solving != MPI_COMM_NULL)
-      result =
-        method.bounds(parameters, alpha, response, output_names, solving);
+      {
+        result = method.bounds(parameters, alpha, timed, output_names, solving);
+        result.evaluation_time = summed(solving);
+      }
     wait_for_all_ranks(comm); // (the others, without spinning)
     return dealii::Utilities::MPI::broadcast(comm, result, root);
   }

@@ -185,9 +185,10 @@ namespace FuzzyContact
       {
         ProofRound this_round;
         Timer      clock;
-        result.bounds          = search();
-        this_round.search_time = clock.wall_time();
-        this_round.evaluations = result.bounds.n_evaluations;
+        result.bounds              = search();
+        this_round.search_time     = clock.wall_time();
+        this_round.evaluations     = result.bounds.n_evaluations;
+        this_round.evaluation_time = result.bounds.evaluation_time;
         clock.restart();
         result.proofs         = prove(result.bounds);
         this_round.proof_time = clock.wall_time();

@@ -67,12 +67,14 @@ namespace FuzzyContact
     BoundProofs       &proofs = result.proven.proofs;
     bounds.wall_time          = 0;
     bounds.n_evaluations      = 0;
+    bounds.evaluation_time    = 0;
     proofs.wall_time          = shared;
     proofs.n_evaluations      = 0;
     for (const ProofRound &r : result.proven.rounds)
       {
         bounds.wall_time += r.search_time;
         bounds.n_evaluations += r.evaluations;
+        bounds.evaluation_time += r.evaluation_time;
         proofs.wall_time += r.proof_time + r.enrichment_time;
         proofs.n_evaluations += r.proofs;
       }

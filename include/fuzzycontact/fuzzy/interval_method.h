@@ -227,6 +227,12 @@ namespace FuzzyContact
     unsigned long n_evaluations = 0;
     /** Wall time [s] (the longest over all ranks). */
     double wall_time = 0;
+    /**
+     * Wall time [s] spent inside the response, summed over the ranks that
+     * evaluated it (bounds_on_ranks() measures it; 0 elsewhere): the
+     * evaluations' own cost, without the method's work between them.
+     */
+    double evaluation_time = 0;
     /** What was detected (non-monotone responses) and done about it. */
     std::vector<std::string> notes;
     /**
@@ -251,9 +257,9 @@ namespace FuzzyContact
     void
     serialize(Archive &ar, const unsigned int)
     {
-      ar &alpha &bounds &argmin &argmax &n_evaluations &wall_time &notes
-        &lower_quality &upper_quality &n_points &n_infeasible &design_points
-          &design_wanted &design_cut;
+      ar &alpha &bounds &argmin &argmax &n_evaluations &wall_time
+        &evaluation_time &notes &lower_quality &upper_quality &n_points
+          &n_infeasible &design_points &design_wanted &design_cut;
     }
   };
 
@@ -276,7 +282,7 @@ namespace FuzzyContact
    * for instance FuzzyContactModel::reduced_communicator(); MPI_COMM_NULL
    * on the others) and sent to every rank of @p comm. With
    * @p solving = @p comm, method.bounds() on @p comm. Collective on
-   * @p comm.
+   * @p comm. Also measures FuzzyOutputBounds::evaluation_time.
    */
   FuzzyOutputBounds
   bounds_on_ranks(const IntervalMethod           &method,

@@ -116,6 +116,8 @@ namespace FuzzyContact
     unsigned int added = 0;
     /** Wall times [s]: search, proofs, enrichment. */
     double search_time = 0, proof_time = 0, enrichment_time = 0;
+    /** Of the search's time, the time inside the response (all ranks). */
+    double evaluation_time = 0;
   };
 
   /** What prove_and_correct() found. */
