@@ -19,6 +19,7 @@
 
 #include "test_utilities.h"
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <memory>
 #include <set>
@@ -286,6 +287,44 @@ TEST(IntervalMethods, AllThreeAreExactForAMonotoneResponse)
   // 4 x 4 x 4 points per box of the 10 levels below the core, plus the core.
   EXPECT_EQ(e.n_evaluations, 10u * 64u + 1u);
   EXPECT_EQ(extension_principle_size(three_parameters, alpha, 2), 81u);
+}
+
+// bounds_on_ranks() measures the time spent inside the response, apart
+// from the method's own work: a response that busy-waits 2 ms per call
+// accounts for at least 2 ms per evaluation, and the method's wall time
+// holds all of it. (Lower bounds only: the machine may be slow, never
+// fast.)
+TEST(IntervalMethods, TheTimeInsideTheResponseIsMeasured)
+{
+  const std::vector<FuzzyNumber> parameters = {FuzzyNumber::triangular(1, 2, 3),
+                                               FuzzyNumber::triangular(0,
+                                                                       1,
+                                                                       2)};
+  unsigned int                   calls      = 0;
+  const Response                 response = [&](const std::vector<double> &p) {
+    ++calls;
+    const auto start = std::chrono::steady_clock::now();
+    while (std::chrono::steady_clock::now() - start <
+           std::chrono::milliseconds(2))
+      ;
+    return std::vector<double>{p[0] + p[1]};
+  };
+  const std::vector<double> alpha = alpha_levels(3);
+  const FuzzyOutputBounds   b     = bounds_on_ranks(VertexMethod(),
+                                              parameters,
+                                              alpha,
+                                              response,
+                                              {"S"},
+                                              self,
+                                              self);
+  ASSERT_EQ(b.n_evaluations, calls);
+  EXPECT_GE(b.evaluation_time, 2e-3 * calls);
+  EXPECT_LE(b.evaluation_time, b.wall_time);
+  // The methods themselves leave it to bounds_on_ranks().
+  EXPECT_EQ(VertexMethod()
+              .bounds(parameters, alpha, response, {"S"}, self)
+              .evaluation_time,
+            0.);
 }
 
 TEST(IntervalMethods, NonMonotoneResponseIsDetectedAndHandled)
