@@ -162,18 +162,17 @@ namespace FuzzyContact
       const StopWatch watch(inside);
       return response(p);
     };
-    const auto summed = [&](const MPI_Comm on) {
-      return dealii::Utilities::MPI::job_supports_mpi()
-               ? dealii::Utilities::MPI::sum(inside, on)
-               : inside;
+    // The bounds on @p on, with the time inside the response of its ranks.
+    const auto on_ranks = [&](const MPI_Comm on) {
+      FuzzyOutputBounds result =
+        method.bounds(parameters, alpha, timed, output_names, on);
+      result.evaluation_time = dealii::Utilities::MPI::job_supports_mpi()
+                                 ? dealii::Utilities::MPI::sum(inside, on)
+                                 : inside;
+      return result;
     };
     if (solving == comm)
-      {
-        FuzzyOutputBounds result =
-          method.bounds(parameters, alpha, timed, output_names, comm);
-        result.evaluation_time = summed(comm);
-        return result;
-      }
+      return on_ranks(comm);
     // The lowest rank of @p comm among the solving ones sends the bounds.
     const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
     const unsigned int rank    = dealii::Utilities::MPI::this_mpi_process(comm);
@@ -184,10 +183,7 @@ namespace FuzzyContact
                 dealii::ExcMessage("No MPI rank can evaluate the response."));
     FuzzyOutputBounds result;
     if (solving != MPI_COMM_NULL)
-      {
-        result = method.bounds(parameters, alpha, timed, output_names, solving);
-        result.evaluation_time = summed(solving);
-      }
+      result = on_ranks(solving);
     wait_for_all_ranks(comm); // (the others, without spinning)
     return dealii::Utilities::MPI::broadcast(comm, result, root);
   }
