@@ -150,7 +150,9 @@ namespace FuzzyContact
     // The line under a method's cost: its time inside the model (summed
     // over the ranks), per evaluation, apart from the method's own work.
     std::string
-    inside(const FuzzyOutputBounds &b, const std::string &model)
+    inside(const FuzzyOutputBounds &b,
+           const std::string       &model,
+           const unsigned int       n_processes)
     {
       if (b.n_evaluations == 0 || b.evaluation_time <= 0)
         return "";
@@ -158,8 +160,9 @@ namespace FuzzyContact
       out << "    inside " << model << std::fixed << std::setprecision(2)
           << std::setw(std::max<int>(1, 37 - model.size())) << b.evaluation_time
           << " s  " << std::setprecision(3)
-          << 1e3 * b.evaluation_time / b.n_evaluations
-          << " ms per evaluation (the rest: the method's own work)\n";
+          << 1e3 * b.evaluation_time / b.n_evaluations << " ms per evaluation ("
+          << (n_processes > 1 ? "the ranks' times added; " : "")
+          << "the rest: the method's own work)\n";
       return out.str();
     }
 
@@ -184,7 +187,7 @@ namespace FuzzyContact
                     "machine's speed"
                 : std::string())
           << ")\n"
-          << inside(r.optimisation, "the reduced model");
+          << inside(r.optimisation, "the reduced model", r.n_processes);
       json["time_s"]["offline"]           = r.offline_time;
       json["time_s"]["optimisation"]      = r.optimisation.wall_time;
       json["time_s"]["fuzzy_study"]       = study;
@@ -213,7 +216,7 @@ namespace FuzzyContact
           out << "  vertex method, reduced model          " << std::setw(8)
               << r.vertex.wall_time << " s  " << r.vertex.n_evaluations
               << " evaluations\n"
-              << inside(r.vertex, "the reduced model");
+              << inside(r.vertex, "the reduced model", r.n_processes);
           json["time_s"]["vertex"]            = r.vertex.wall_time;
           json["evaluation_time_s"]["vertex"] = r.vertex.evaluation_time;
           json["evaluations"]["vertex"]       = r.vertex.n_evaluations;
@@ -227,7 +230,7 @@ namespace FuzzyContact
           out << "  Extension Principle, full order       " << std::setw(8)
               << r.reference.wall_time << " s  " << r.reference.n_evaluations
               << " evaluations (" << kind << ")\n"
-              << inside(r.reference, "the full-order model")
+              << inside(r.reference, "the full-order model", r.n_processes)
               << "  the fuzzy study (offline + optimisation"
               << (r.has_proofs ? " + proofs" : "") << ") takes "
               << std::setprecision(2) << study << " s: ";
