@@ -3,6 +3,7 @@
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/lapack_templates.h>
 
 #include <algorithm>
 #include <atomic>
@@ -62,6 +63,22 @@ namespace FuzzyContact
   FlexibilityOperator::state() const
   {
     return state_;
+  }
+
+
+  void
+  FlexibilityOperator::add_columns(const std::vector<unsigned int> &columns,
+                                   const Vector<double>            &p,
+                                   Vector<double>                  &g)
+  {
+    AssertDimension(g.size(), size());
+    const types::blas_int m = g.size(), one = 1;
+    for (const unsigned int j : columns)
+      if (p[j] != 0)
+        {
+          const double pj = p[j];
+          axpy(&m, &pj, column(j), &one, g.data(), &one);
+        }
   }
 
 

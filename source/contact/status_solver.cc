@@ -50,7 +50,9 @@ namespace FuzzyContact
       void
       gather(std::vector<double> &A) const
       {
-        A.assign(std::size_t(N) * N, 0.);
+        // Every entry is written once (no clearing first: the matrix is
+        // assembled anew at every new W).
+        A.resize(std::size_t(N) * N);
         // Unknown c's row of W, or -1 where the equation is not W's.
         std::vector<int> rows(m);
         for (unsigned int c = 0; c < m; ++c)
@@ -62,8 +64,7 @@ namespace FuzzyContact
             const double *w      = W.column(row_of_W(c));
             double       *column = &A[std::size_t(c) * N];
             for (unsigned int r = 0; r < m; ++r)
-              if (rows[r] >= 0)
-                column[r] = w[rows[r]];
+              column[r] = rows[r] >= 0 ? w[rows[r]] : 0.;
           }
         for (unsigned int r = 1; r < m; r += 2)
           if (rows[r] < 0)
@@ -75,8 +76,8 @@ namespace FuzzyContact
           {
             double *column = &A[std::size_t(m + j) * N];
             for (unsigned int r = 0; r < m; ++r)
-              if (rows[r] >= 0)
-                column[r] = scale * G(rows[r], j);
+              column[r] = rows[r] >= 0 ? scale * G(rows[r], j) : 0.;
+            std::fill(column + m, column + N, 0.);
             for (unsigned int c = 0; c < m; ++c)
               A[std::size_t(c) * N + m + j] = scale * G(row_of_W(c), j);
           }

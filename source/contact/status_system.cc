@@ -157,16 +157,8 @@ namespace FuzzyContact
           const LoadStep                  *step,
           const Vector<double>            &a)
   {
-    Vector<double>     g = g_free;
-    const unsigned int m = g.size();
-    for (const unsigned int j : columns)
-      if (p[j] != 0)
-        {
-          const double *w  = W.column(j);
-          const double  pj = p[j];
-          for (unsigned int i = 0; i < m; ++i)
-            g[i] += w[i] * pj;
-        }
+    Vector<double> g = g_free;
+    W.add_columns(columns, p, g);
     if (step != nullptr)
       add_rigid_gaps(*step, a, g);
     return g;

@@ -9,6 +9,7 @@
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_templates.h>
 #include <deal.II/lac/vector.h>
 
 #include <algorithm>
@@ -114,6 +115,38 @@ namespace FuzzyContact
           list.push_back(j);
         }
       return w;
+    }
+
+    // The columns are side by side in the cache (column j at row j): a
+    // run of consecutive columns is one matrix-vector product (BLAS).
+    void
+    add_columns(const std::vector<unsigned int> &columns,
+                const Vector<double>            &p,
+                Vector<double>                  &g) override
+    {
+      AssertDimension(g.size(), m);
+      prepare(columns);
+      const types::blas_int ld = m, one = 1;
+      const double          alpha = 1;
+      for (std::size_t r = 0; r < columns.size();)
+        {
+          std::size_t e = r + 1;
+          while (e < columns.size() && columns[e] == columns[e - 1] + 1)
+            ++e;
+          const types::blas_int n = e - r;
+          gemv("N",
+               &ld,
+               &n,
+               &alpha,
+               &cache(columns[r], 0),
+               &ld,
+               p.data() + columns[r],
+               &one,
+               &alpha,
+               g.data(),
+               &one);
+          r = e;
+        }
     }
 
     double

@@ -137,6 +137,15 @@ namespace FuzzyContact
     virtual double
     diagonal(const unsigned int i) = 0;
     /**
+     * g += W(:, J) p(J), J = @p columns: the gaps of forces that are zero
+     * outside J. Column by column here (BLAS axpy); an operator that keeps
+     * its columns side by side does it by matrix-vector products.
+     */
+    virtual void
+    add_columns(const std::vector<unsigned int> &columns,
+                const Vector<double>            &p,
+                Vector<double>                  &g);
+    /**
      * A number that identifies the operator and the present value of its
      * W: unique to the operator when it is made, and new whenever W
      * changes (a new state of a reduced model, new stiffness scales), so
