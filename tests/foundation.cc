@@ -921,7 +921,7 @@ TEST(SparseCholesky, TrailingBlockIsTheInverseRestrictedToTheLastDofs)
 // kept) or none; a replacement that makes the matrix singular is refused.
 TEST(RowUpdatedLU, SolvesLikeAFactorisationOfTheReplacedMatrix)
 {
-  const unsigned int N = 60;
+  const unsigned int  N = 60;
   std::vector<double> A0(N * N), A1(N * N);
   // A non-symmetric matrix with a dominant diagonal, and another one whose
   // rows replace some of it (as a tangential equation replaces a row of W).
@@ -984,6 +984,21 @@ TEST(RowUpdatedLU, SolvesLikeAFactorisationOfTheReplacedMatrix)
   RowUpdatedLU singular;
   EXPECT_FALSE(singular.factorise(twin, N, 1e-13));
   EXPECT_TRUE(singular.empty());
+
+  // A copy (a load step adopting another's factors) shares A0's factors
+  // and their kept columns: it solves with rows of its own replaced, and
+  // the original made anew (here: of A1) leaves the copy's A0 as it was.
+  RowUpdatedLU copy = lu;
+  EXPECT_EQ(copy.n_cached_columns(), 7u); // and row 8's
+
+  ASSERT_TRUE(lu.factorise(A1, N, 1e-13));
+  EXPECT_EQ(lu.n_cached_columns(), 0u);
+  ASSERT_TRUE(copy.replace_rows(A1, {59, 2}));
+  EXPECT_EQ(copy.n_cached_columns(), 8u);
+  copy.vmult(x, b);
+  error = reference({59, 2});
+  error -= x;
+  EXPECT_LT(error.linfty_norm(), 1e-12 * x.linfty_norm());
 }
 
 // A body refactorised at new zone moduli keeps its pattern: the second

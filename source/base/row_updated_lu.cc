@@ -65,18 +65,18 @@ namespace FuzzyContact
   {
     AssertDimension(A.size(), std::size_t(size) * size);
     clear();
-    lu    = A;
-    norm  = norm1(A.data(), size, size);
-    rcond = factorise_in_place(lu, size, norm, pivots);
-    if (!(rcond >= min_rcond) || size == 0)
-      {
-        clear();
-        return false;
-      }
-    N               = size;
-    this->min_rcond = min_rcond;
-    matrix          = A;
-    column_of_row.assign(N, -1);
+    auto factors  = std::make_shared<Factors>();
+    factors->lu   = A;
+    factors->norm = norm1(A.data(), size, size);
+    factors->rcond =
+      factorise_in_place(factors->lu, size, factors->norm, factors->pivots);
+    if (!(factors->rcond >= min_rcond) || size == 0)
+      return false;
+    factors->N         = size;
+    factors->min_rcond = min_rcond;
+    factors->matrix    = A;
+    factors->column_of_row.assign(size, -1);
+    f = std::move(factors);
     return true;
   }
 
@@ -86,6 +86,7 @@ namespace FuzzyContact
                              const std::vector<unsigned int> &new_rows)
   {
     Assert(!empty(), ExcMessage("replace_rows() needs factors"));
+    const unsigned int N = f->N;
     AssertDimension(A.size(), std::size_t(N) * N);
     restore();
     if (new_rows.empty())
@@ -98,46 +99,50 @@ namespace FuzzyContact
     for (const unsigned int i : new_rows)
       {
         AssertIndexRange(i, N);
-        if (column_of_row[i] < 0)
+        if (f->column_of_row[i] < 0)
           missing.push_back(i);
       }
     if (!missing.empty())
       {
-        const types::blas_int k     = missing.size();
-        const std::size_t     first = columns.size();
+        std::vector<double>  &columns = f->columns;
+        const types::blas_int k       = missing.size();
+        const std::size_t     first   = columns.size();
         columns.resize(first + std::size_t(k) * N, 0.);
         for (types::blas_int j = 0; j < k; ++j)
           {
             columns[first + std::size_t(j) * N + missing[j]] = 1;
-            column_of_row[missing[j]]                        = first / N + j;
+            f->column_of_row[missing[j]]                     = first / N + j;
           }
         types::blas_int info = 0;
         getrs("N",
               &n,
               &k,
-              lu.data(),
+              f->lu.data(),
               &n,
-              pivots.data(),
+              f->pivots.data(),
               &columns[first],
               &n,
               &info);
         Assert(info == 0, ExcInternalError());
-        n_columns += k;
+        f->n_columns += k;
       }
 
     // D = (A - A0)_R, Z = A0^{-1} E_R and C = I + D Z, factorised.
     D.resize(std::size_t(r) * N);
     Z.resize(std::size_t(N) * r);
-    for (types::blas_int j = 0; j < r; ++j)
+    // (Column by column of A: the rows of one column lie together.)
+    for (unsigned int c = 0; c < N; ++c)
       {
-        const unsigned int i = new_rows[j];
-        for (unsigned int c = 0; c < N; ++c)
-          D[std::size_t(c) * r + j] =
-            A[std::size_t(c) * N + i] - matrix[std::size_t(c) * N + i];
-        std::copy_n(&columns[std::size_t(column_of_row[i]) * N],
-                    N,
-                    &Z[std::size_t(j) * N]);
+        const double *a  = &A[std::size_t(c) * N],
+                     *a0 = &f->matrix[std::size_t(c) * N];
+        double *d        = &D[std::size_t(c) * r];
+        for (types::blas_int j = 0; j < r; ++j)
+          d[j] = a[new_rows[j]] - a0[new_rows[j]];
       }
+    for (types::blas_int j = 0; j < r; ++j)
+      std::copy_n(&f->columns[std::size_t(f->column_of_row[new_rows[j]]) * N],
+                  N,
+                  &Z[std::size_t(j) * N]);
     C.assign(std::size_t(r) * r, 0.);
     const double alpha = 1, beta = 0;
     gemm("N",
@@ -164,9 +169,9 @@ namespace FuzzyContact
                  norm_C  = norm1(C.data(), r, r),
                  rcond_C = factorise_in_place(C, r, norm_C, C_pivots);
     if (!(rcond_C > 0) ||
-        !(rcond / ((1 + norm_D / norm) *
-                   (1 + norm_Z * norm_D / (rcond_C * norm_C))) >=
-          min_rcond))
+        !(f->rcond / ((1 + norm_D / f->norm) *
+                      (1 + norm_Z * norm_D / (rcond_C * norm_C))) >=
+          f->min_rcond))
       return false;
     rows = new_rows;
     return true;
@@ -177,11 +182,19 @@ namespace FuzzyContact
   RowUpdatedLU::vmult(Vector<double> &dst, const Vector<double> &src) const
   {
     Assert(!empty(), ExcMessage("vmult() needs factors"));
-    AssertDimension(src.size(), N);
+    AssertDimension(src.size(), f->N);
     dst                     = src;
-    const types::blas_int n = N, one = 1;
+    const types::blas_int n = f->N, one = 1;
     types::blas_int       info = 0;
-    getrs("N", &n, &one, lu.data(), &n, pivots.data(), dst.data(), &n, &info);
+    getrs("N",
+          &n,
+          &one,
+          f->lu.data(),
+          &n,
+          f->pivots.data(),
+          dst.data(),
+          &n,
+          &info);
     Assert(info == 0, ExcInternalError());
     if (rows.empty())
       return;
@@ -226,15 +239,7 @@ namespace FuzzyContact
   void
   RowUpdatedLU::clear()
   {
-    N     = 0;
-    norm  = 0;
-    rcond = 0;
-    matrix.clear();
-    lu.clear();
-    pivots.clear();
-    column_of_row.clear();
-    columns.clear();
-    n_columns = 0;
+    f.reset();
     rows.clear();
     D.clear();
     Z.clear();
@@ -246,14 +251,14 @@ namespace FuzzyContact
   bool
   RowUpdatedLU::empty() const
   {
-    return lu.empty();
+    return f == nullptr;
   }
 
 
   unsigned int
   RowUpdatedLU::size() const
   {
-    return N;
+    return f == nullptr ? 0 : f->N;
   }
 
 
@@ -267,6 +272,6 @@ namespace FuzzyContact
   unsigned long
   RowUpdatedLU::n_cached_columns() const
   {
-    return n_columns;
+    return f == nullptr ? 0 : f->n_columns;
   }
 } // namespace FuzzyContact

@@ -26,6 +26,7 @@
 #include <deal.II/lac/lapack_support.h>
 #include <deal.II/lac/vector.h>
 
+#include <memory>
 #include <vector>
 
 namespace FuzzyContact
@@ -81,17 +82,24 @@ namespace FuzzyContact
     n_cached_columns() const;
 
   private:
-    unsigned int N = 0;
-    // A0, its 1-norm and reciprocal condition number, and the least one
-    // accepted for the matrix with rows replaced.
-    std::vector<double>          matrix;
-    double                       norm = 0, rcond = 0, min_rcond = 0;
-    std::vector<double>          lu;
-    std::vector<types::blas_int> pivots;
-    // A0^{-1} e_i for the rows asked so far: column position per row, or -1.
-    std::vector<int>    column_of_row;
-    std::vector<double> columns;
-    unsigned long       n_columns = 0;
+    // What belongs to A0: A0, its 1-norm and reciprocal condition number,
+    // the least one accepted for the matrix with rows replaced, its LU
+    // factors, and A0^{-1} e_i for the rows asked so far (column position
+    // per row, or -1). Copies of a RowUpdatedLU share it (a copy costs no
+    // O(N^2) data, and the columns one of them computes serve all); a new
+    // factorisation makes a new one.
+    struct Factors
+    {
+      unsigned int                 N = 0;
+      std::vector<double>          matrix;
+      double                       norm = 0, rcond = 0, min_rcond = 0;
+      std::vector<double>          lu;
+      std::vector<types::blas_int> pivots;
+      std::vector<int>             column_of_row;
+      std::vector<double>          columns;
+      unsigned long                n_columns = 0;
+    };
+    std::shared_ptr<Factors> f;
     // The rows replaced now: D (r x N, column-major), Z (N x r) and the LU
     // factors of C (r x r).
     std::vector<unsigned int>    rows;
