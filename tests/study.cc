@@ -36,6 +36,7 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <random>
 #include <sstream>
 
 using namespace FuzzyContact;
@@ -878,6 +879,72 @@ TEST(Gravity, RefusedInput)
             std::string::npos);
 }
 
+
+// The nearest evaluated point (WarmStarts) against a scan of every kept
+// point in scaled distance, the first stored of equally near ones: points
+// that come as an optimiser's do (random walks, with jumps and exact
+// repeats), more of them than the archive keeps (the oldest overwritten),
+// asked at random points and at kept points themselves.
+TEST(WarmStarts, TheNearestPointIsAScansAnswer)
+{
+  const std::vector<double>        widths   = {2., 0.5, 0., 10.};
+  const std::size_t                capacity = 300;
+  WarmStarts                       archive(widths, capacity);
+  std::vector<std::vector<double>> kept(capacity);
+  std::vector<std::size_t>         index_of(capacity);
+  std::mt19937                     random(7);
+  std::uniform_real_distribution<> unit(0., 1.);
+  std::vector<double>              x = {0., 0., 0., 0.};
+  const auto scaled_distance         = [&](const std::vector<double> &a,
+                                   const std::vector<double> &b) {
+    double d = 0;
+    for (unsigned int i = 0; i < a.size(); ++i)
+      if (widths[i] > 0)
+        d += (a[i] / widths[i] - b[i] / widths[i]) *
+             (a[i] / widths[i] - b[i] / widths[i]);
+    return d;
+  };
+  std::size_t checked = 0;
+  for (std::size_t added = 0; added < 1000; ++added)
+    {
+      if (added % 97 == 0)
+        for (unsigned int i = 0; i < 4; ++i)
+          x[i] = widths[i] * unit(random);
+      else if (added % 13 != 0) // else: the same point again
+        for (unsigned int i = 0; i < 4; ++i)
+          x[i] += 0.01 * (widths[i] + 1) * (unit(random) - 0.5);
+      std::vector<ContactState> states(1);
+      states[0].p.reinit(1);
+      states[0].p[0] = added;
+      archive.add(x, states);
+      kept[added % capacity]     = x;
+      index_of[added % capacity] = added;
+      const std::size_t n_kept   = std::min(added + 1, capacity);
+      for (unsigned int q = 0; q < 3; ++q)
+        {
+          std::vector<double> y(4);
+          for (unsigned int i = 0; i < 4; ++i)
+            y[i] = widths[i] * (1.2 * unit(random) - 0.1);
+          if (q == 2)
+            y = kept[std::size_t(unit(random) * n_kept) % n_kept];
+          std::size_t best     = 0;
+          double      distance = std::numeric_limits<double>::infinity();
+          for (std::size_t e = 0; e < n_kept; ++e)
+            if (scaled_distance(y, kept[e]) < distance)
+              {
+                distance = scaled_distance(y, kept[e]);
+                best     = e;
+              }
+          const std::vector<ContactState> *found = archive.nearest(y);
+          ASSERT_NE(found, nullptr);
+          EXPECT_EQ(std::size_t((*found)[0].p[0]), index_of[best])
+            << "point " << added << ", query " << q;
+          ++checked;
+        }
+    }
+  EXPECT_EQ(archive.size(), capacity);
+  EXPECT_EQ(checked, 3000u);
+}
 
 // Warm starts (contact/contact_workspace.h): the block of prm/slope.prm,
 // held by contact alone, pressed and then pushed down the slope in a second

@@ -2,6 +2,7 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <algorithm>
 #include <limits>
 
 namespace FuzzyContact
@@ -59,7 +60,28 @@ namespace FuzzyContact
                   coordinates.begin() + next * dimension);
         states[next] = std::move(kept);
       }
+    update_box(next / block_size);
     next = (next + 1) % capacity;
+  }
+
+
+  void
+  WarmStarts::update_box(const std::size_t block)
+  {
+    const std::size_t n_blocks = (states.size() + block_size - 1) / block_size;
+    box_low.resize(n_blocks * dimension);
+    box_high.resize(n_blocks * dimension);
+    double *low  = &box_low[block * dimension],
+           *high = &box_high[block * dimension];
+    std::fill(low, low + dimension, std::numeric_limits<double>::infinity());
+    std::fill(high, high + dimension, -std::numeric_limits<double>::infinity());
+    const std::size_t end = std::min(states.size(), (block + 1) * block_size);
+    for (std::size_t e = block * block_size; e < end; ++e)
+      for (unsigned int i = 0; i < dimension; ++i)
+        {
+          low[i]  = std::min(low[i], coordinates[e * dimension + i]);
+          high[i] = std::max(high[i], coordinates[e * dimension + i]);
+        }
   }
 
 
@@ -69,18 +91,43 @@ namespace FuzzyContact
     if (states.empty() || x.size() != dimension)
       return nullptr;
     scale(x, scaled_x);
-    std::size_t   best     = 0;
-    double        distance = std::numeric_limits<double>::infinity();
-    const double *c        = coordinates.data();
-    for (std::size_t e = 0; e < states.size(); ++e, c += dimension)
+    // The blocks by the (squared) distance from x to their box.
+    const std::size_t n_blocks = box_low.size() / std::max(1u, dimension);
+    order.resize(n_blocks);
+    for (std::size_t b = 0; b < n_blocks; ++b)
       {
-        double d = 0;
+        const double *low  = &box_low[b * dimension],
+                     *high = &box_high[b * dimension];
+        double d           = 0;
         for (unsigned int i = 0; i < dimension; ++i)
-          d += (scaled_x[i] - c[i]) * (scaled_x[i] - c[i]);
-        if (d < distance)
           {
-            distance = d;
-            best     = e;
+            const double outside =
+              std::max({low[i] - scaled_x[i], scaled_x[i] - high[i], 0.});
+            d += outside * outside;
+          }
+        order[b] = {d, b};
+      }
+    std::sort(order.begin(), order.end());
+    // The nearest point, the first stored of equally near ones (as a scan
+    // in storage order finds it): a box strictly farther holds none.
+    std::size_t best     = 0;
+    double      distance = std::numeric_limits<double>::infinity();
+    for (const auto &[box_distance, b] : order)
+      {
+        if (box_distance > distance)
+          break;
+        const std::size_t end = std::min(states.size(), (b + 1) * block_size);
+        const double     *c   = &coordinates[b * block_size * dimension];
+        for (std::size_t e = b * block_size; e < end; ++e, c += dimension)
+          {
+            double d = 0;
+            for (unsigned int i = 0; i < dimension; ++i)
+              d += (scaled_x[i] - c[i]) * (scaled_x[i] - c[i]);
+            if (d < distance || (d == distance && e < best))
+              {
+                distance = d;
+                best     = e;
+              }
           }
       }
     return &states[best];

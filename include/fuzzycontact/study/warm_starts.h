@@ -7,10 +7,15 @@
 // nearest point in that scaled Euclidean distance. Only what a solver
 // starts from is kept (statuses, slip directions, forces and free motions'
 // amplitudes per load step), and at most a fixed number of points (the
-// oldest go first); finding the nearest is a scan over their scaled
-// coordinates, kept in one contiguous array (a few microseconds for 4096
-// points: small even next to the 20-60 us solve of a scene with few
-// contact nodes).
+// oldest go first). The points are kept in blocks of block_size in the
+// order they came, each with the box that holds its points: an optimiser's
+// consecutive points lie close together, so the boxes are small, and the
+// search visits the blocks by increasing distance to their box and stops
+// at the first box farther than the nearest point found. The answer is
+// that of a scan over every point (the first stored of equally near
+// ones), at a fraction of its cost: a scan took 10-15 us for 3000 points
+// in 3 parameters, as much as a reduced evaluation of a scene with few
+// contact nodes.
 
 #ifndef fuzzycontact_study_warm_starts_h
 #define fuzzycontact_study_warm_starts_h
@@ -18,6 +23,7 @@
 #include <fuzzycontact/contact/contact_problem.h>
 
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace FuzzyContact
@@ -59,7 +65,14 @@ namespace FuzzyContact
     std::vector<double>                    coordinates;
     std::vector<std::vector<ContactState>> states;
     std::size_t                            next = 0;
-    mutable std::vector<double>            scaled_x;
+    // Per block of block_size points (in storage order), the smallest and
+    // largest scaled coordinates of its points (dimension each).
+    static constexpr std::size_t block_size = 32;
+    std::vector<double>          box_low, box_high;
+    void
+                                update_box(const std::size_t block);
+    mutable std::vector<double> scaled_x;
+    mutable std::vector<std::pair<double, std::size_t>> order;
   };
 } // namespace FuzzyContact
 
