@@ -337,7 +337,16 @@ namespace FuzzyContact
       out << "  against the Extension Principle, relative to the output's "
              "range ("
           << sci(range, 3) << "): the optimisation is short of it by at most "
-          << sci(short_of) << "\n";
+          << sci(short_of);
+      // A shortfall above the tolerance of the range but within the
+      // output's accuracy (a range of round-off) is said to be round-off,
+      // not left to read as a miss.
+      if (short_of > r.proof_settings.tolerance && short_bounds.empty())
+        out << " (" << sci(short_of * range)
+            << " in the output's units: within its accuracy, "
+            << sci(r.proof_settings.accuracy) << " of its magnitude "
+            << sci(magnitude, 3) << ", so round-off)";
+      out << "\n";
       if (n_missed > 0)
         out << "  " << n_missed << " bound(s) lie beyond the Extension "
             << "Principle's interval and the exact solver confirms them at "

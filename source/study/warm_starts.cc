@@ -68,6 +68,8 @@ namespace FuzzyContact
   void
   WarmStarts::update_box(const std::size_t block)
   {
+    if (dimension == 0)
+      return;
     const std::size_t n_blocks = (states.size() + block_size - 1) / block_size;
     box_low.resize(n_blocks * dimension);
     box_high.resize(n_blocks * dimension);
