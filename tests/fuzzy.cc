@@ -905,6 +905,21 @@ TEST(GlobalStage, StartsComeFromDistinctBasins)
   const auto      one = global_stage(flat, design, {}, lo, hi);
   EXPECT_EQ(basin_starts(flat, one.candidates, lo, hi, 3, 1e-12).points.size(),
             1u);
+
+  // An output the parameters cannot change (a total force held by statics)
+  // varies by round-off only, in no order: its design shows one basin
+  // (every root tested), not the many roots of a clustering of round-off.
+  EvaluationCache roundoff([](const std::vector<double> &p) {
+    return std::vector<double>{1. + 1e-15 * std::sin(1e3 * (p[0] + 7 * p[1]))};
+  });
+  OutputObjective constant(roundoff, normalisation, 0, 1., 1., 1e-4, lo, hi);
+  const auto      none = global_stage(constant, design, {}, lo, hi);
+  ASSERT_GT(nearest_better_roots(none.candidates, lo, hi).size(), 8u);
+  const Starts level =
+    basin_starts(constant, none.candidates, lo, hi, 3, 1e-12);
+  EXPECT_EQ(level.points.size(), 1u);
+  EXPECT_EQ(level.n_roots, 1u);
+  EXPECT_TRUE(level.all_roots_tested);
 }
 
 namespace

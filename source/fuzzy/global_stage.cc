@@ -256,6 +256,16 @@ namespace FuzzyContact
       Starts starts;
       if (candidates.empty())
         return starts;
+      // A design whose values all lie within the response's accuracy of
+      // each other (an output the parameters cannot change: a total force
+      // held by statics) shows one basin: the order of its values, on
+      // which the clustering rests, is round-off.
+      if (candidates.back().value - candidates.front().value <= noise)
+        {
+          starts.n_roots = 1;
+          starts.points.push_back(candidates.front());
+          return starts;
+        }
       const std::vector<unsigned int> roots =
         nearest_better_roots(candidates, lower, upper);
       starts.n_roots = roots.size();

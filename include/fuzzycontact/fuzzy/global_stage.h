@@ -159,7 +159,9 @@ namespace FuzzyContact
      * roots of the nearest-better clustering in their order, each taken if
      * the hill-valley test separates it from every start taken (a distinct
      * basin), up to @p max_starts; at most 2 @p max_starts + 2 roots are
-     * tested.
+     * tested. A design whose values differ by at most @p noise (the
+     * response's accuracy) shows one basin: its best point is the only
+     * start.
      */
     Starts
     basin_starts(OutputObjective              &objective,
