@@ -747,6 +747,41 @@ namespace
   }
 } // namespace
 
+// A problem is checked at every solve of a study: a gap or flexibility
+// entry that is not finite is refused wherever it lies (the check sums
+// four lanes side by side and then the rest: 14 rows try every lane and
+// the rest), a finite problem passes.
+TEST(ContactProblem, RefusesEveryNonFiniteEntry)
+{
+  const unsigned int m = 14;
+  FullMatrix<double> W(m, m);
+  for (unsigned int i = 0; i < m; ++i)
+    W(i, i) = 1e-6;
+  const ContactProblem finite =
+    small_problem(W, std::vector<double>(m, -1e-4), 0.3);
+  EXPECT_NO_THROW(finite.check());
+  for (const double bad : {std::numeric_limits<double>::quiet_NaN(),
+                           std::numeric_limits<double>::infinity(),
+                           -std::numeric_limits<double>::infinity()})
+    for (unsigned int i = 0; i < m; ++i)
+      {
+        ContactProblem p = finite;
+        p.g_load[i]      = bad;
+        EXPECT_THROW(p.check(), ExceptionBase) << i;
+        p              = finite;
+        p.g_initial[i] = bad;
+        EXPECT_THROW(p.check(), ExceptionBase) << i;
+        p             = finite;
+        p.W(m - 1, i) = bad;
+        EXPECT_THROW(p.check(), ExceptionBase) << i;
+        p = finite;
+        p.stages.push_back({finite.g_load, 1, {}});
+        EXPECT_NO_THROW(p.check());
+        p.stages[0].g_load[i] = bad;
+        EXPECT_THROW(p.check(), ExceptionBase) << i;
+      }
+}
+
 // One node, W = [2 0.5; 0.5 1] 1e-6 m/N, g_free = (-1 mm, +0.2 mm), mu =
 // 0.3. Sticking would need p = W^{-1} (1e-3, -2e-4) = (628.6, -514.3) N,
 // beyond the cone; slipping with p_t = -0.3 p_n: (2 - 0.15) 1e-6 p_n =

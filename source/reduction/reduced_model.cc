@@ -90,6 +90,10 @@ namespace FuzzyContact
                                         double            *w) const
   {
     const unsigned int m = diagonal.size();
+    // W_c is positive semi-definite: a zero diagonal entry (a contact row
+    // the component has no part in) makes its whole column zero.
+    if (diagonal[j] == 0)
+      return;
     if (!low_rank)
       {
         // W_c is symmetric: its row j is its column j.

@@ -258,6 +258,12 @@ namespace FuzzyContact
       thickness.push_back(
         scene.components[scene.component_index(pair.slave_component)]
           .thickness);
+    for (unsigned int k = 0; k < interface.n_nodes(); ++k)
+      {
+        const ContactNode &node = interface.node(k);
+        node_pair.push_back(node.pair);
+        pressure_area.push_back(node.tributary_length * thickness[node.pair]);
+      }
 
     // The report node: the slave node farthest along its master tangent,
     // and the master segment under it (at a vertex, the segment on the
@@ -419,32 +425,37 @@ namespace FuzzyContact
             v = s.observed[o.component][positions[i]];
           }
         else
-          for (unsigned int k = 0; k < interface.n_nodes(); ++k)
-            {
-              const ContactNode &node = interface.node(k);
-              if (o.pair >= 0 && node.pair != static_cast<unsigned int>(o.pair))
-                continue;
-              switch (o.kind)
-                {
-                  case Observation::Kind::normal_force:
-                    v += s.p_n(k);
-                    break;
-                  case Observation::Kind::tangential_force:
-                    v += s.p_t(k);
-                    break;
-                  case Observation::Kind::max_pressure:
-                    v = std::max(v,
-                                 s.p_n(k) / (node.tributary_length *
-                                             thickness[node.pair]));
-                    break;
-                  case Observation::Kind::contact_length:
-                    if (s.status[k] != ContactStatus::open)
-                      v += node.tributary_length;
-                    break;
-                  default:
-                    break;
-                }
-            }
+          {
+            // Straight over the forces (an output is read at every
+            // evaluation: on a small scene its loop over the slave nodes
+            // cost a tenth of the reduced one).
+            const int           pair = o.pair;
+            const unsigned int  n    = interface.n_nodes();
+            const double *const p    = s.p.begin();
+            for (unsigned int k = 0; k < n; ++k)
+              {
+                if (pair >= 0 && node_pair[k] != pair)
+                  continue;
+                switch (o.kind)
+                  {
+                    case Observation::Kind::normal_force:
+                      v += p[normal_row(k)];
+                      break;
+                    case Observation::Kind::tangential_force:
+                      v += p[tangential_row(k)];
+                      break;
+                    case Observation::Kind::max_pressure:
+                      v = std::max(v, p[normal_row(k)] / pressure_area[k]);
+                      break;
+                    case Observation::Kind::contact_length:
+                      if (s.status[k] != ContactStatus::open)
+                        v += interface.node(k).tributary_length;
+                      break;
+                    default:
+                      break;
+                  }
+              }
+          }
         values.push_back(v);
       }
     return values;

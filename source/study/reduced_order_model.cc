@@ -395,9 +395,17 @@ namespace FuzzyContact
     reduced->set_stiffness_scales(scales);
     reduced->set_zone_densities(state.zone_densities);
     reduced->set_load_forces(state.load_forces);
+    // (Per slave node, so only when they change: a study that varies
+    // neither sets them once.)
+    if (contact_conditions_set && state.gap_offsets == gap_offsets &&
+        state.friction_coefficients == friction_coefficients)
+      return;
     ContactProblem &problem = reduced->problem();
     problem.g_initial       = interface.initial_gaps(state.gap_offsets);
-    problem.mu = interface.friction_coefficients(state.friction_coefficients);
+    problem.mu  = interface.friction_coefficients(state.friction_coefficients);
+    gap_offsets = state.gap_offsets;
+    friction_coefficients  = state.friction_coefficients;
+    contact_conditions_set = true;
   }
 
 

@@ -93,9 +93,10 @@ namespace FuzzyContact
     if (states.empty() || x.size() != dimension)
       return nullptr;
     scale(x, scaled_x);
-    // The blocks by the (squared) distance from x to their box.
+    // The (squared) distance from x to each block's box.
     const std::size_t n_blocks = box_low.size() / std::max(1u, dimension);
     order.resize(n_blocks);
+    std::size_t first = 0;
     for (std::size_t b = 0; b < n_blocks; ++b)
       {
         const double *low  = &box_low[b * dimension],
@@ -108,30 +109,34 @@ namespace FuzzyContact
             d += outside * outside;
           }
         order[b] = {d, b};
+        if (d < order[first].first)
+          first = b;
       }
-    std::sort(order.begin(), order.end());
     // The nearest point, the first stored of equally near ones (as a scan
-    // in storage order finds it): a box strictly farther holds none.
+    // in storage order finds it): the nearest box first, then every box
+    // not strictly farther than the nearest point found so far (no sort:
+    // the distance only falls, so a box passed over stays too far).
     std::size_t best     = 0;
     double      distance = std::numeric_limits<double>::infinity();
-    for (const auto &[box_distance, b] : order)
-      {
-        if (box_distance > distance)
-          break;
-        const std::size_t end = std::min(states.size(), (b + 1) * block_size);
-        const double     *c   = &coordinates[b * block_size * dimension];
-        for (std::size_t e = b * block_size; e < end; ++e, c += dimension)
-          {
-            double d = 0;
-            for (unsigned int i = 0; i < dimension; ++i)
-              d += (scaled_x[i] - c[i]) * (scaled_x[i] - c[i]);
-            if (d < distance || (d == distance && e < best))
-              {
-                distance = d;
-                best     = e;
-              }
-          }
-      }
+    const auto  scan     = [&](const std::size_t b) {
+      const std::size_t end = std::min(states.size(), (b + 1) * block_size);
+      const double     *c   = &coordinates[b * block_size * dimension];
+      for (std::size_t e = b * block_size; e < end; ++e, c += dimension)
+        {
+          double d = 0;
+          for (unsigned int i = 0; i < dimension; ++i)
+            d += (scaled_x[i] - c[i]) * (scaled_x[i] - c[i]);
+          if (d < distance || (d == distance && e < best))
+            {
+              distance = d;
+              best     = e;
+            }
+        }
+    };
+    scan(first);
+    for (std::size_t b = 0; b < n_blocks; ++b)
+      if (b != first && order[b].first <= distance)
+        scan(b);
     return &states[best];
   }
 

@@ -128,8 +128,12 @@ namespace FuzzyContact
     void
     observe(Observation &observation, const FaceNode &node, const int d);
 
-    const ContactInterface  &interface;
-    std::vector<double>      thickness; // of each pair's slave component
+    const ContactInterface &interface;
+    std::vector<double>     thickness; // of each pair's slave component
+    // Per slave node: its pair, and the area its normal force acts on
+    // (tributary length times thickness).
+    std::vector<int>         node_pair;
+    std::vector<double>      pressure_area;
     unsigned int             slave_node_;
     std::array<FaceNode, 2>  master_nodes;
     std::vector<Observation> observations;

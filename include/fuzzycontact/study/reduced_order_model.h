@@ -255,6 +255,11 @@ namespace FuzzyContact
     ContactWorkspace                             workspace_;
     std::string                                  label;
     unsigned int                                 n_load_steps = 1;
+    // The gap offsets and friction coefficients (per pair) the contact
+    // problem's initial gaps and friction coefficients were last set from
+    // (set_state() sets them anew only when they change).
+    std::vector<double> gap_offsets, friction_coefficients;
+    bool                contact_conditions_set = false;
     // The quantities varied and their ranges, the communicator and the
     // rank that built each component (for add_snapshots()).
     std::vector<VaryingQuantity> varying;
