@@ -9,6 +9,7 @@
 #include <fuzzycontact/contact/contact_problem.h>
 #include <fuzzycontact/contact/status_solver.h>
 
+#include <deal.II/base/exceptions.h>
 #include <deal.II/lac/full_matrix.h>
 
 #include <algorithm>

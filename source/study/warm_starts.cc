@@ -95,7 +95,7 @@ namespace FuzzyContact
     scale(x, scaled_x);
     // The (squared) distance from x to each block's box.
     const std::size_t n_blocks = box_low.size() / std::max(1u, dimension);
-    order.resize(n_blocks);
+    box_distance.resize(n_blocks);
     std::size_t first = 0;
     for (std::size_t b = 0; b < n_blocks; ++b)
       {
@@ -108,8 +108,8 @@ namespace FuzzyContact
               std::max({low[i] - scaled_x[i], scaled_x[i] - high[i], 0.});
             d += outside * outside;
           }
-        order[b] = {d, b};
-        if (d < order[first].first)
+        box_distance[b] = d;
+        if (d < box_distance[first])
           first = b;
       }
     // The nearest point, the first stored of equally near ones (as a scan
@@ -135,7 +135,7 @@ namespace FuzzyContact
     };
     scan(first);
     for (std::size_t b = 0; b < n_blocks; ++b)
-      if (b != first && order[b].first <= distance)
+      if (b != first && box_distance[b] <= distance)
         scan(b);
     return &states[best];
   }
