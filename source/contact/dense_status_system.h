@@ -60,9 +60,17 @@ namespace FuzzyContact
         rows[c] = c % 2 == 0 || status[closed[c / 2]] == ContactStatus::stick
                     ? int(row_of_W(c))
                     : -1;
+      // All of the columns at once: a part of W that changes with the
+      // state (reduced_model_flexibility.h) combines many missing columns
+      // as one matrix product, where one column at a time would read its
+      // whole factor per column.
+      std::vector<unsigned int> columns(m);
+      for (unsigned int c = 0; c < m; ++c)
+        columns[c] = row_of_W(c);
+      W.prepare(columns);
       for (unsigned int c = 0; c < m; ++c)
         {
-          const double *w      = W.column(row_of_W(c));
+          const double *w      = W.column(columns[c]);
           double       *column = &A[std::size_t(c) * N];
           for (unsigned int r = 0; r < m; ++r)
             column[r] = rows[r] >= 0 ? w[rows[r]] : 0.;
