@@ -20,6 +20,7 @@
 #include <fuzzycontact/study/full_order_model.h>
 
 #include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/lapack_templates.h>
 
 #include <gtest/gtest.h>
 
@@ -999,6 +1000,67 @@ TEST(RowUpdatedLU, SolvesLikeAFactorisationOfTheReplacedMatrix)
   error = reference({59, 2});
   error -= x;
   EXPECT_LT(error.linfty_norm(), 1e-12 * x.linfty_norm());
+}
+
+// The condition estimate that decides whether factors are kept, against
+// LAPACK's own dgecon on getrf's factors: the same estimator with other
+// triangular solves, so the same value to round-off, on matrices from well
+// conditioned to nearly singular (graded columns).
+extern "C" void
+dgecon_(const char                    *norm,
+        const dealii::types::blas_int *n,
+        const double                  *a,
+        const dealii::types::blas_int *lda,
+        const double                  *anorm,
+        double                        *rcond,
+        double                        *work,
+        dealii::types::blas_int       *iwork,
+        dealii::types::blas_int       *info);
+
+TEST(RowUpdatedLU, EstimatesTheConditionAsLapackDoes)
+{
+  for (const unsigned int N : {1u, 7u, 60u, 300u})
+    for (const double grading : {0., 4., 12., 17.})
+      {
+        std::vector<double> A(std::size_t(N) * N);
+        double              norm = 0;
+        for (unsigned int j = 0; j < N; ++j)
+          {
+            double column = 0;
+            for (unsigned int i = 0; i < N; ++i)
+              {
+                double &a = A[std::size_t(j) * N + i];
+                a         = (std::sin(1. + i + 7. * j) + (i == j ? 2. : 0.)) *
+                    std::pow(10., -grading * j / std::max(1u, N - 1));
+                column += std::abs(a);
+              }
+            norm = std::max(norm, column);
+          }
+        std::vector<double>                  lu = A, work(4 * N);
+        const dealii::types::blas_int        n  = N;
+        std::vector<dealii::types::blas_int> pivots(N), iwork(N);
+        dealii::types::blas_int              info     = 0;
+        double                               expected = 0;
+        dealii::getrf(&n, &n, lu.data(), &n, pivots.data(), &info);
+        ASSERT_EQ(info, 0);
+        dgecon_("1",
+                &n,
+                lu.data(),
+                &n,
+                &norm,
+                &expected,
+                work.data(),
+                iwork.data(),
+                &info);
+        ASSERT_EQ(info, 0);
+        RowUpdatedLU factors;
+        factors.factorise(A, N, 0.);
+        EXPECT_NEAR(factors.rcond(), expected, 1e-8 * expected)
+          << N << " unknowns, columns graded over 1e-" << grading;
+        // The threshold refuses the nearly singular ones.
+        EXPECT_EQ(RowUpdatedLU().factorise(A, N, 1e-13), expected >= 1e-13)
+          << N << " unknowns, columns graded over 1e-" << grading;
+      }
 }
 
 // A body refactorised at new zone moduli keeps its pattern: the second

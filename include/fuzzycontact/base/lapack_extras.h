@@ -8,17 +8,17 @@
 
 extern "C"
 {
-  // The condition estimate of an LU factorisation.
+  // Hager and Higham's estimate of a matrix's 1-norm by reverse
+  // communication (the core of LAPACK's condition estimates): called until
+  // *kase == 0, each call asks for x := A x (kase 1) or A^T x (kase 2).
   void
-  dgecon_(const char                    *norm,
-          const dealii::types::blas_int *n,
-          const double                  *a,
-          const dealii::types::blas_int *lda,
-          const double                  *anorm,
-          double                        *rcond,
-          double                        *work,
-          dealii::types::blas_int       *iwork,
-          dealii::types::blas_int       *info);
+  dlacn2_(const dealii::types::blas_int *n,
+          double                        *v,
+          double                        *x,
+          dealii::types::blas_int       *isgn,
+          double                        *est,
+          dealii::types::blas_int       *kase,
+          dealii::types::blas_int       *isave);
 
   // The pivoted Cholesky factorisation.
   void

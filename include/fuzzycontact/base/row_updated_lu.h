@@ -17,8 +17,8 @@
 // substitution and O(r N). Where M is only close to the matrix to solve
 // (the caller's other rows moved a little too), it is the preconditioner
 // of an iterative solver. LAPACK's getrf/getrs factorise and solve; the
-// condition of A0 is estimated once (dgecon) and that of C checked, so a
-// replacement that makes M singular is refused, not solved.
+// condition of A0 is estimated once (LAPACK's estimator) and that of C
+// checked, so a replacement that makes M singular is refused, not solved.
 
 #ifndef fuzzycontact_base_row_updated_lu_h
 #define fuzzycontact_base_row_updated_lu_h
@@ -80,6 +80,12 @@ namespace FuzzyContact
     /** Back-substitutions made for the columns A0^{-1} e_i so far. */
     unsigned long
     n_cached_columns() const;
+    /**
+     * The estimate of A0's reciprocal condition number in the 1-norm
+     * (LAPACK's estimator, dlacn2, with getrs's solves); 0 without factors.
+     */
+    double
+    rcond() const;
 
   private:
     // What belongs to A0: A0, its 1-norm and reciprocal condition number,
