@@ -36,11 +36,14 @@ namespace FuzzyContact
     class ActiveSetMethod
     {
     public:
+      // With @p stick_before_reversal (and bodies held by contact alone), a
+      // slipping node whose slip would reverse sticks first (below).
       ActiveSetMethod(FlexibilityOperator       &W,
                       const LoadStep            &step,
                       const std::vector<double> &mu,
                       const ActiveSetParameters &parameters,
-                      const std::string         &what)
+                      const std::string         &what,
+                      const bool                 stick_before_reversal = true)
           : W(W)
           , step(step)
           , mu(mu)
@@ -57,6 +60,7 @@ namespace FuzzyContact
           , c_t([this](const unsigned int k) {
             return diagonal_inverse(tangential_row(k), ct, k);
           })
+          , stick_before_reversal(stick_before_reversal)
           , status(step.start != nullptr ? step.start->status
                                          : step.previous.status)
           , sign(step.start != nullptr ? step.start->slip_sign
@@ -482,7 +486,8 @@ namespace FuzzyContact
               // free motions answer the friction forces of all slipping
               // nodes at once, and whole-interface reversals would follow
               // each other (a roller rocking from one side to the other).
-              if (step.n_motions() > 0 && s == ContactStatus::slip &&
+              if (stick_before_reversal && step.n_motions() > 0 &&
+                  s == ContactStatus::slip &&
                   status[k] == ContactStatus::slip && d != sign[k])
                 {
                   s = ContactStatus::stick;
@@ -544,6 +549,7 @@ namespace FuzzyContact
       std::vector<double>                       cn, ct;
       const std::function<double(unsigned int)> c_n, c_t;
 
+      const bool                 stick_before_reversal;
       std::vector<ContactStatus> status;
       std::vector<int>           sign;
       unsigned int               iterations = 0;
@@ -577,26 +583,67 @@ namespace FuzzyContact
   {
     AssertDimension(W.size(), 2 * mu.size());
     AssertDimension(step.g_free.size(), 2 * mu.size());
+    // A load no contact forces can balance, or a body whose position the
+    // contact does not determine, has no solution from any start.
+    const auto has_no_solution = [](const std::string &message) {
+      return message.find("no static equilibrium") != std::string::npos ||
+             message.find("is not determined") != std::string::npos;
+    };
+    // A warm start (another point's statuses, ContactWorkspace::start) can
+    // lead the iterations where the load path does not: a slip zone that
+    // spreads over the interface a few nodes per iteration, or a cycle.
+    // Failed from it, the step is solved again from the previous load
+    // step's state, as without a workspace.
+    LoadStep cold                = step;
+    cold.start                   = nullptr;
+    const auto solve_from_either = [&](const std::vector<double> &m) {
+      if (step.start == nullptr)
+        return ActiveSetMethod(W, step, m, parameters_, what).solve();
+      try
+        {
+          return ActiveSetMethod(W, step, m, parameters_, what).solve();
+        }
+      catch (const ExceptionBase &e)
+        {
+          if (has_no_solution(Input::message_of(e)))
+            throw;
+        }
+      return ActiveSetMethod(W, cold, m, parameters_, what).solve();
+    };
     if (step.n_motions() == 0 || *std::max_element(mu.begin(), mu.end()) == 0)
-      return ActiveSetMethod(W, step, mu, parameters_, what).solve();
+      return solve_from_either(mu);
     try
       {
-        return ActiveSetMethod(W, step, mu, parameters_, what).solve();
+        return solve_from_either(mu);
       }
     catch (const ExceptionBase &e)
       {
         const std::string message = Input::message_of(e);
-        // A load no contact forces can balance has no solution at all.
-        if (message.find("no static equilibrium") != std::string::npos ||
-            message.find("is not determined") != std::string::npos)
+        if (has_no_solution(message))
           throw;
+        // Near the limit of equilibrium (a body that almost slides, every
+        // node but a few slipping), a slip that reverses is a small change
+        // of the free motions, and a whole interface that sticks before it
+        // reverses (the rule that calms a rocking roller, below) starts
+        // the iterations over and over: the step is solved again from the
+        // load path without that rule.
+        try
+          {
+            return ActiveSetMethod(W, cold, mu, parameters_, what, false)
+              .solve();
+          }
+        catch (const ExceptionBase &e)
+          {
+            if (has_no_solution(Input::message_of(e)))
+              throw;
+          }
         // A body held by contact alone turns in answer to the friction
         // forces of all slipping nodes at once, which can keep the
         // primal-dual iterations from settling; the same step is solved
         // again with the friction coefficients ramped up from 0, each
         // solve started from the previous one's statuses.
         const unsigned int  n_ramp = 8;
-        LoadStep            ramped = step;
+        LoadStep            ramped = cold;
         std::vector<double> m(mu.size());
         ContactState        state;
         unsigned int        iterations = 0;
@@ -616,7 +663,9 @@ namespace FuzzyContact
           {
             AssertThrow(false,
                         ExcMessage(message +
-                                   " (Solved again with the friction "
+                                   " (Solved again from the previous load "
+                                   "step's state, with slips allowed to "
+                                   "reverse at once, and with the friction "
                                    "coefficients ramped up from 0 in " +
                                    std::to_string(n_ramp) +
                                    " steps: no better.)"));
