@@ -632,9 +632,9 @@ namespace FuzzyContact
             return ActiveSetMethod(W, cold, mu, parameters_, what, false)
               .solve();
           }
-        catch (const ExceptionBase &e)
+        catch (const ExceptionBase &again)
           {
-            if (has_no_solution(Input::message_of(e)))
+            if (has_no_solution(Input::message_of(again)))
               throw;
           }
         // A body held by contact alone turns in answer to the friction
