@@ -327,6 +327,42 @@ TEST(TwoPairs, FuzzyStudyReferenceKeepsEachPairsFriction)
     }
 }
 
+// step-4's `Exact contact solver` keys reach its exact full-order
+// reference too (the Extension Principle's samples, the proofs): it solved
+// with the defaults whatever the step file said, while its "did not
+// converge" message named the key. With `max iterations = 1` the three
+// beams' reference stops there and says so; with the default it answers.
+TEST(TwoPairs, TheExactSolverKeysReachTheFullOrderReference)
+{
+  const Scene             s   = scene("three-beams");
+  const FuzzyParameterSet set = fuzzy_parameters(
+    s,
+    "set fuzzy parameters = P1.E\nsubsection Fuzzy parameter P1.E\n"
+    "set values = 0.9, 1, 1.1\nset relative = true\nend\n");
+  FuzzyContactModelSettings settings;
+  settings.mesh_refinements     = 0;
+  settings.contact_solver       = "reduced exact";
+  settings.exact.max_iterations = 1;
+  FuzzyContactModel limited(s, set, pair_outputs, settings);
+  std::string       message;
+  try
+    {
+      limited.full_order({210e9});
+    }
+  catch (const ExceptionBase &e)
+    {
+      message = Input::message_of(e);
+    }
+  EXPECT_NE(message.find("did not converge in 1 iterations"), std::string::npos)
+    << message;
+  EXPECT_NE(message.find("Exact contact solver/max iterations"),
+            std::string::npos)
+    << message;
+  settings.exact.max_iterations = 200;
+  FuzzyContactModel enough(s, set, pair_outputs, settings);
+  EXPECT_EQ(enough.full_order({210e9}).size(), pair_outputs.size());
+}
+
 // step-4's key `contact solver` (FuzzyContactModelSettings): the reduced
 // model solved by FL2C (the default) or by the exact reduced solver, said
 // in the model's description. On `stacked` (distributed contact) with a

@@ -192,7 +192,9 @@ namespace FuzzyContact
     reduced_model->set_contact_solver(std::move(solver),
                                       solver_name == "fl2c" ? "FL2C"
                                                             : solver_name);
-    full_model = std::make_unique<FullOrderModel>(*bodies, outputs->dofs());
+    full_model = std::make_unique<FullOrderModel>(*bodies,
+                                                  outputs->dofs(),
+                                                  settings.exact);
     for (unsigned int c = 0; c < bodies->n_components(); ++c)
       if (!bodies->component(c).free_motion_names().empty())
         held_by_contact +=
