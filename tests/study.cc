@@ -288,17 +288,27 @@ TEST(TwoPairs, EverySolverKeepsEachPairsFriction)
   EXPECT_NEAR(std::abs(f[3]), 0.5 * f[2], 1e-9 * f[2]);
 }
 
+namespace
+{
+  // The fuzzy modulus of three-beams' middle beam P1 (+-10 %).
+  FuzzyParameterSet
+  p1_modulus(const Scene &s)
+  {
+    return fuzzy_parameters(
+      s,
+      "set fuzzy parameters = P1.E\nsubsection Fuzzy parameter P1.E\n"
+      "set values = 0.9, 1, 1.1\nset relative = true\nend\n");
+  }
+} // namespace
+
 // The fuzzy study on three-beams with a fuzzy modulus of the middle beam:
 // its exact reference keeps each pair's friction (it gave every node the
 // first pair's mu = 0 before, and F_t = 0 where the reduced path and an
 // independent solve give about 0.5 F_n of the upper pair).
 TEST(TwoPairs, FuzzyStudyReferenceKeepsEachPairsFriction)
 {
-  const Scene             s   = scene("three-beams");
-  const FuzzyParameterSet set = fuzzy_parameters(
-    s,
-    "set fuzzy parameters = P1.E\nsubsection Fuzzy parameter P1.E\n"
-    "set values = 0.9, 1, 1.1\nset relative = true\nend\n");
+  const Scene               s   = scene("three-beams");
+  const FuzzyParameterSet   set = p1_modulus(s);
   FuzzyContactModelSettings settings;
   settings.mesh_refinements = 0;
   settings.fl2c.tolerance   = 1e-10;
@@ -334,11 +344,8 @@ TEST(TwoPairs, FuzzyStudyReferenceKeepsEachPairsFriction)
 // beams' reference stops there and says so; with the default it answers.
 TEST(TwoPairs, TheExactSolverKeysReachTheFullOrderReference)
 {
-  const Scene             s   = scene("three-beams");
-  const FuzzyParameterSet set = fuzzy_parameters(
-    s,
-    "set fuzzy parameters = P1.E\nsubsection Fuzzy parameter P1.E\n"
-    "set values = 0.9, 1, 1.1\nset relative = true\nend\n");
+  const Scene               s   = scene("three-beams");
+  const FuzzyParameterSet   set = p1_modulus(s);
   FuzzyContactModelSettings settings;
   settings.mesh_refinements     = 0;
   settings.contact_solver       = "reduced exact";
@@ -462,9 +469,12 @@ TEST(ReducedOrderModel, RefusesAStateItWasNotBuiltFor)
 namespace
 {
   // The outputs of @p scene solved by the full-order model, the exact
-  // reduced solver and FL2C on modes + static correction (mesh as read).
+  // reduced solver and (if @p fl2c_too) FL2C on modes + static correction
+  // (mesh as read).
   std::vector<std::vector<double>>
-  three_ways(const Scene &s, const std::vector<std::string> &names)
+  three_ways(const Scene                    &s,
+             const std::vector<std::string> &names,
+             const bool                      fl2c_too = true)
   {
     ContactScene       bodies(s, 0);
     const Observations outputs(names, bodies);
@@ -477,6 +487,9 @@ namespace
                               std::vector<VaryingQuantity>(),
                               ReducedModelSettings());
     reduced.set_state(state);
+    if (!fl2c_too)
+      return {outputs.values(full.solve()),
+              outputs.values(reduced.solve(ActiveSetSolver()))};
     FL2CParameters fl2c;
     fl2c.tolerance = 1e-10;
     return {outputs.values(full.solve()),
@@ -668,25 +681,13 @@ TEST(FloatingBodies, TwoStackedBodiesNearTheLimitOfSliding)
     t = replace(t, from, to);
   const Scene  s = Scene::read_from_string(t, source_dir + "/prm/bearing.prm");
   const double press = 2e5, push = 4e4;
-  ContactScene bodies(s, 0);
-  const Observations outputs({"plate-on-pedestal.Fn",
-                              "plate-on-pedestal.Ft",
-                              "column-on-plate.Fn",
-                              "column-on-plate.Ft",
-                              "Column.node(0.2, 0.13).ux"},
-                             bodies);
-  const SceneState   state(s);
-  FullOrderModel     full(bodies, outputs.dofs());
-  full.set_state(state);
-  ReducedOrderModel reduced(bodies,
-                            component_modes(bodies, ModalParameters()),
-                            outputs.dofs(),
-                            std::vector<VaryingQuantity>(),
-                            ReducedModelSettings());
-  reduced.set_state(state);
-  const std::vector<std::vector<double>> v = {outputs.values(full.solve()),
-                                              outputs.values(reduced.solve(
-                                                ActiveSetSolver()))};
+  const auto   v = three_ways(s,
+                            {"plate-on-pedestal.Fn",
+                               "plate-on-pedestal.Ft",
+                               "column-on-plate.Fn",
+                               "column-on-plate.Ft",
+                               "Column.node(0.2, 0.13).ux"},
+                            false);
   for (const auto &w : v)
     {
       ASSERT_EQ(w.size(), 5u);
