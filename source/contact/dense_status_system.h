@@ -54,20 +54,21 @@ namespace FuzzyContact
       // Every entry is written once (no clearing first: the matrix is
       // assembled anew at every new W).
       A.resize(std::size_t(N) * N);
-      // Unknown c's row of W, or -1 where the equation is not W's.
-      std::vector<int> rows(m);
-      for (unsigned int c = 0; c < m; ++c)
-        rows[c] = c % 2 == 0 || status[closed[c / 2]] == ContactStatus::stick
-                    ? int(row_of_W(c))
-                    : -1;
-      // All of the columns at once: a part of W that changes with the
-      // state (reduced_model_flexibility.h) combines many missing columns
-      // as one matrix product, where one column at a time would read its
-      // whole factor per column.
+      // W's column of each unknown c < m, all of them at once: a part of
+      // W that changes with the state (reduced_model_flexibility.h)
+      // combines many missing columns as one matrix product, where one
+      // column at a time would read its whole factor per column.
       std::vector<unsigned int> columns(m);
       for (unsigned int c = 0; c < m; ++c)
         columns[c] = row_of_W(c);
       W.prepare(columns);
+      // Unknown c's row of W (W is symmetric: its column), or -1 where
+      // the equation is not W's.
+      std::vector<int> rows(m);
+      for (unsigned int c = 0; c < m; ++c)
+        rows[c] = c % 2 == 0 || status[closed[c / 2]] == ContactStatus::stick
+                    ? int(columns[c])
+                    : -1;
       for (unsigned int c = 0; c < m; ++c)
         {
           const double *w      = W.column(columns[c]);
