@@ -7,6 +7,7 @@
 
 #include "active_set_method.h"
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -96,24 +97,59 @@ namespace FuzzyContact
 
     // A body held by contact alone turns in answer to the friction forces
     // of all slipping nodes at once, which can keep the primal-dual
-    // iterations from settling; the same step is solved again with the
-    // friction coefficients ramped up from 0, each solve started from the
-    // previous one's statuses.
-    const unsigned int  n_ramp = 8;
-    LoadStep            ramped = cold;
-    std::vector<double> m(mu.size());
-    ContactState        state;
-    unsigned int        iterations = 0;
+    // iterations from settling. The same step is solved again along a path
+    // of friction coefficients s mu, each solve started from the previous
+    // one's statuses:
+    //  - if the bodies need friction to be held (s >= s_min > 0,
+    //    least_friction_factor()), from s = s_min + 1 down to s = 1, the
+    //    distance s - s_min to the limit of sliding at most halved per
+    //    solve: far from the limit the iterations settle, and each solve
+    //    then starts from statuses near its own (near the limit nearly
+    //    every node slips, and the few that stick decide the free motions);
+    //  - otherwise up from 0 in 8 solves.
+    const std::vector<double> frictionless(mu.size(), 0.);
+    Vector<double>            p0;
+    LoadStep                  ramped = cold;
+    std::vector<double>       m(mu.size());
+    ContactState              state;
+    unsigned int              iterations = 0, solves = 0;
+    const auto                solve_at = [&](const double s) {
+      for (unsigned int k = 0; k < mu.size(); ++k)
+        m[k] = s == 1 ? mu[k] : s * mu[k];
+      ++solves;
+      state = ActiveSetMethod(W, ramped, m, parameters_, what).solve();
+      iterations += state.iterations;
+      ramped.previous = state;
+    };
     try
       {
-        for (unsigned int i = 1; i <= n_ramp; ++i)
+        if (held_with_friction && !admissible_forces(step, frictionless, p0))
           {
-            for (unsigned int k = 0; k < mu.size(); ++k)
-              m[k] = mu[k] * i / n_ramp;
-            state = ActiveSetMethod(W, ramped, m, parameters_, what).solve();
-            iterations += state.iterations;
-            ramped.previous = state;
+            const double s_min        = least_friction_factor(step, mu, 0, 1);
+            const double final_margin = std::max(1 - s_min, 1e-12);
+            double       margin = 1, next = 1;
+            while (true)
+              {
+                next = std::max(next, final_margin);
+                try
+                  {
+                    solve_at(next == final_margin ? 1. : s_min + next);
+                    margin = next;
+                    if (margin == final_margin)
+                      break;
+                    next = margin / 2;
+                  }
+                catch (const ExceptionBase &)
+                  {
+                    if (margin == next || solves >= 64)
+                      throw;
+                    next = std::sqrt(margin * next);
+                  }
+              }
           }
+        else
+          for (unsigned int i = 1; i <= 8; ++i)
+            solve_at(i / 8.);
       }
     catch (const ExceptionBase &)
       {
@@ -121,9 +157,10 @@ namespace FuzzyContact
                     ExcMessage(message +
                                " (Solved again from the previous load step's "
                                "state, with slips allowed to reverse at "
-                               "once, and with the friction coefficients "
-                               "ramped up from 0 in " +
-                               std::to_string(n_ramp) + " steps: no better.)"));
+                               "once, and along a path of " +
+                               std::to_string(solves) +
+                               " friction coefficients ending at the "
+                               "given ones: no better.)"));
       }
     state.iterations = iterations;
     return state;

@@ -232,6 +232,27 @@ namespace FuzzyContact
   }
 
 
+  double
+  least_friction_factor(const LoadStep            &step,
+                        const std::vector<double> &mu,
+                        double                     low,
+                        double                     high)
+  {
+    Assert(low >= 0 && high > low, ExcInternalError());
+    std::vector<double> scaled(mu.size());
+    Vector<double>      p;
+    for (unsigned int i = 0; i < 100 && high - low > 1e-12 * high; ++i)
+      {
+        const double middle =
+          low > 0 ? std::sqrt(low * high) : (low + high) / 2;
+        for (unsigned int k = 0; k < mu.size(); ++k)
+          scaled[k] = middle * mu[k];
+        (admissible_forces(step, scaled, p) ? high : low) = middle;
+      }
+    return high;
+  }
+
+
   void
   check_equilibrium(const LoadStep            &step,
                     const std::vector<double> &mu,
@@ -244,24 +265,13 @@ namespace FuzzyContact
     // The friction the body would need: the least factor s such that the
     // coefficients s mu can hold it (bisection on a logarithmic scale), if
     // one up to 1e3 can; none if it lifts off (or has no friction at all).
-    const auto feasible = [&](const double s) {
-      std::vector<double> scaled = mu;
-      for (double &m : scaled)
-        m *= s;
-      return admissible_forces(step, scaled, p);
-    };
+    std::vector<double> scaled = mu;
+    for (double &m : scaled)
+      m *= 1e3;
     const double mu_max = *std::max_element(mu.begin(), mu.end());
     double       needed = 0;
-    if (mu_max > 0 && feasible(1e3))
-      {
-        double low = 1, high = 1e3;
-        for (unsigned int i = 0; i < 60 && high / low > 1 + 1e-12; ++i)
-          {
-            const double middle             = std::sqrt(low * high);
-            (feasible(middle) ? high : low) = middle;
-          }
-        needed = high * mu_max;
-      }
+    if (mu_max > 0 && admissible_forces(step, scaled, p))
+      needed = least_friction_factor(step, mu, 1, 1e3) * mu_max;
     std::ostringstream message;
     message << what << ": no static equilibrium (load step " << step.step
             << "): the bodies held by contact alone cannot be held by "

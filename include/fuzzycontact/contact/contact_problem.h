@@ -435,6 +435,19 @@ namespace FuzzyContact
                     const std::string         &what);
 
   /**
+   * The least factor s in [@p low, @p high] such that the friction
+   * coefficients s @p mu can hold the bodies held by contact alone
+   * (admissible_forces()), by bisection (on a logarithmic scale if @p low
+   * > 0) to a relative width of 1e-12. The caller knows that @p high can
+   * hold them and @p low cannot.
+   */
+  double
+  least_friction_factor(const LoadStep            &step,
+                        const std::vector<double> &mu,
+                        double                     low,
+                        double                     high);
+
+  /**
    * What check_equilibrium() throws (its message says why and what
    * friction would hold the body). A study that varies loads or friction
    * coefficients takes it as a result of the point, not as a failure
