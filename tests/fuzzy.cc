@@ -1928,6 +1928,32 @@ namespace
   }
 } // namespace
 
+// Evaluations near the limit of equilibrium that the contact solver could
+// not answer were left out of the bounds: the report says so in a warning
+// line with their number, and results.json counts them; none, no warning.
+TEST(FuzzyStudyReport, PointsLeftOutNearTheLimitAreAWarning)
+{
+  for (const unsigned long n : {0ul, 3ul})
+    {
+      FuzzyStudyResults r =
+        one_output_results(Interval{0., 1.}, Interval{0., 1.});
+      r.has_equilibrium       = true;
+      r.n_unsolved_near_limit = n;
+      nlohmann::json    json;
+      const std::string text = FuzzyStudyReport::equilibrium(r, json);
+      EXPECT_EQ(text.find("warning: 3 evaluation(s) near the limit of "
+                          "equilibrium (the loads need more than 95 % of "
+                          "the friction) failed in the contact solver") !=
+                  std::string::npos,
+                n > 0)
+        << text;
+      EXPECT_EQ(text.find("warning:") != std::string::npos, n > 0) << text;
+      EXPECT_EQ(json["static_equilibrium"]["n_unsolved_near_limit"]
+                  .get<unsigned long>(),
+                n);
+    }
+}
+
 // A bound short of the Extension Principle's sample by more than the
 // proofs' tolerance is not the optimum, whatever its search said: the
 // report says so in a warning line, and results.json flags it and calls

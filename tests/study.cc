@@ -666,10 +666,10 @@ TEST(FloatingBodies, RollerWithLittleFriction)
 // - All but 0.05 % (mu = 0.2001): that fails too; a path of friction
 //   coefficients from about twice what the bodies need down to the given
 //   ones, the distance to the limit halved per solve, converges.
-// Both exact solvers (full order, reduced) must find the equilibrium that
-// statics gives: each pair carries the press and the push. (FL2C's coarse
-// correction still fails there, from the state its sweeps leave:
-// doc/contact.md.)
+// Both exact solvers (full order, reduced) and FL2C (whose coarse
+// correction is the reduced exact solver: it failed at 0.202173 before
+// the path) must find the equilibrium that statics gives: each pair carries
+// the press and the push.
 TEST(FloatingBodies, TwoStackedBodiesNearTheLimitOfSliding)
 {
   std::ifstream      in(source_dir + "/prm/bearing.prm");
@@ -695,8 +695,8 @@ TEST(FloatingBodies, TwoStackedBodiesNearTheLimitOfSliding)
                                    "plate-on-pedestal.Ft",
                                    "column-on-plate.Fn",
                                    "column-on-plate.Ft",
-                                   "Column.node(0.2, 0.13).ux"},
-                                false);
+                                   "Column.node(0.2, 0.13).ux"});
+      ASSERT_EQ(v.size(), 3u);
       for (const auto &w : v)
         {
           ASSERT_EQ(w.size(), 5u) << "mu = " << mu;
@@ -768,6 +768,68 @@ TEST(FloatingBodies, AFailedWarmStartGivesWayToTheLoadPath)
       EXPECT_NEAR(std::abs(v[2]), p[3], 1e-9 * 2e5) << "point " << i;
     }
   EXPECT_GT(held, 100u);
+}
+
+// The same study at a point where both exact solvers still fail (plate mu
+// = 0.2018, 0.9 % above the 0.2 the push of 40 kN on 200 kN needs; the bed
+// at half its modulus, the column's mu 0.7: doc/contact.md, section 1).
+// Such a point is left out as if without equilibrium, counted, and the
+// study goes on; a point 1.2 % from the limit still answers with statics,
+// and a solve that fails far from the limit (here at an iteration limit of
+// 2) is still an error. (The first point is chosen because the solvers
+// fail there today; when they no longer do, it proves nothing: the test
+// then says so.)
+TEST(FloatingBodies, AFailureNearTheLimitOfSlidingLeavesThePointOut)
+{
+  std::ifstream      in(source_dir + "/prm/bearing.prm");
+  std::ostringstream text;
+  text << in.rdbuf();
+  const Scene s =
+    Scene::read_from_string(text.str(), source_dir + "/prm/bearing.prm");
+  const FuzzyParameterSet set = fuzzy_parameters(
+    s,
+    "set fuzzy parameters = Pedestal.bed.E, plate-on-pedestal.mu, "
+    "column-on-plate.mu, Column.push.force\n"
+    "subsection Fuzzy parameter Pedestal.bed.E\nset values = 0.5, 1, 1.5\n"
+    "set relative = true\nend\n"
+    "subsection Fuzzy parameter plate-on-pedestal.mu\n"
+    "set values = 0.1, 0.2, 0.3\nend\n"
+    "subsection Fuzzy parameter column-on-plate.mu\n"
+    "set values = 0.3, 0.5, 0.7\nend\n"
+    "subsection Fuzzy parameter Column.push.force\n"
+    "set values = 10e3, 20e3, 40e3\nend\n");
+  const std::vector<std::string> outputs = {"plate-on-pedestal.Fn",
+                                            "plate-on-pedestal.Ft"};
+  FuzzyContactModelSettings      settings;
+  settings.mesh_refinements = 0;
+  settings.contact_solver   = "reduced exact";
+  FuzzyContactModel model(s, set, outputs, settings);
+
+  const std::vector<double> failing = {7.5e9, 0.2018, 0.7, 40e3};
+  EXPECT_TRUE(model.reduced(failing).empty())
+    << "the reduced exact solver now converges here: choose another point";
+  EXPECT_TRUE(model.full_order(failing).empty())
+    << "the full-order solver now converges here: choose another point";
+  EXPECT_EQ(model.n_unsolved_near_limit(), 2u);
+  EXPECT_EQ(model.n_at_limit_of_equilibrium(), 0u);
+
+  for (const bool full : {false, true})
+    {
+      const std::vector<double> p = {7.5e9, 0.2025, 0.7, 40e3};
+      const std::vector<double> v =
+        full ? model.full_order(p) : model.reduced(p);
+      ASSERT_EQ(v.size(), 2u);
+      EXPECT_NEAR(v[0], 2e5, 1e-9 * 2e5);
+      EXPECT_NEAR(std::abs(v[1]), 4e4, 1e-9 * 2e5);
+    }
+  EXPECT_EQ(model.n_unsolved_near_limit(), 2u);
+
+  settings.exact.max_iterations = 2;
+  FuzzyContactModel         strict(s, set, outputs, settings);
+  const std::vector<double> far = {15e9, 0.3, 0.5, 10e3};
+  EXPECT_THROW(strict.reduced(far), ExceptionBase);
+  EXPECT_THROW(strict.full_order(far), ExceptionBase);
+  EXPECT_EQ(strict.n_unsolved_near_limit(), 0u);
 }
 
 // ----------------------------------------------------------------------------

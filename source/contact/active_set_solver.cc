@@ -103,9 +103,12 @@ namespace FuzzyContact
     //  - if the bodies need friction to be held (s >= s_min > 0,
     //    least_friction_factor()), from s = s_min + 1 down to s = 1, the
     //    distance s - s_min to the limit of sliding at most halved per
-    //    solve: far from the limit the iterations settle, and each solve
-    //    then starts from statuses near its own (near the limit nearly
-    //    every node slips, and the few that stick decide the free motions);
+    //    solve (a solve that fails is tried again closer to the last
+    //    converged one, the distance's ratio square-rooted, up to 4 times
+    //    in a row and 64 solves in all): far from the limit the iterations
+    //    settle, and each solve then starts from statuses near its own
+    //    (near the limit nearly every node slips, and the few that stick
+    //    decide the free motions);
     //  - otherwise up from 0 in 8 solves.
     const std::vector<double> frictionless(mu.size(), 0.);
     Vector<double>            p0;
@@ -128,20 +131,22 @@ namespace FuzzyContact
             const double s_min        = least_friction_factor(step, mu, 0, 1);
             const double final_margin = std::max(1 - s_min, 1e-12);
             double       margin = 1, next = 1;
+            unsigned int failures = 0;
             while (true)
               {
                 next = std::max(next, final_margin);
                 try
                   {
                     solve_at(next == final_margin ? 1. : s_min + next);
-                    margin = next;
+                    margin   = next;
+                    failures = 0;
                     if (margin == final_margin)
                       break;
                     next = margin / 2;
                   }
                 catch (const ExceptionBase &)
                   {
-                    if (margin == next || solves >= 64)
+                    if (margin == next || ++failures > 4 || solves >= 64)
                       throw;
                     next = std::sqrt(margin * next);
                   }

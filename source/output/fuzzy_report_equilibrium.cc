@@ -145,6 +145,16 @@ namespace FuzzyContact
                "failed in the contact solver and were counted as without "
                "equilibrium\n";
       j["n_at_limit"] = r.n_at_limit;
+      if (r.n_unsolved_near_limit > 0)
+        out << "  warning: " << r.n_unsolved_near_limit
+            << " evaluation(s) near the limit of equilibrium (the loads need "
+               "more than "
+            << 100 * (1 - FuzzyContactModel::near_limit_margin)
+            << " % of the friction) failed in the contact solver and were "
+               "left out as if without equilibrium: the bounds next to the "
+               "edge of equilibrium may miss them (doc/contact.md, section "
+               "1)\n";
+      j["n_unsolved_near_limit"] = r.n_unsolved_near_limit;
 
       j["sliding_possible"] = {{"possible", e.possible},
                                {"membership", e.membership},

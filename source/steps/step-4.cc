@@ -389,6 +389,8 @@ namespace Step4
     results.ranks = model->work_per_rank();
     results.n_at_limit =
       Utilities::MPI::sum(model->n_at_limit_of_equilibrium(), comm);
+    results.n_unsolved_near_limit =
+      Utilities::MPI::sum(model->n_unsolved_near_limit(), comm);
     nlohmann::json json;
     FuzzyStudyReport::bounds(results, report, json);
     json["contact_solver"] = model->contact_solver();

@@ -82,14 +82,31 @@ namespace FuzzyContact
 
 
   bool
-  FuzzyContactModel::at_limit_of_equilibrium()
+  FuzzyContactModel::at_limit_of_equilibrium(const double margin)
   {
     // The reduced problem of the current state with every friction
     // coefficient lowered by the margin.
     ContactProblem problem = reduced_model->problem();
     for (double &mu : problem.mu)
-      mu *= 1 - limit_margin;
+      mu *= 1 - margin;
     return !FuzzyContact::has_static_equilibrium(problem);
+  }
+
+
+  bool
+  FuzzyContactModel::failure_counts_as_without_equilibrium()
+  {
+    if (!can_lose_equilibrium())
+      return false;
+    // At the limit the static answer is degenerate (a body about to slide
+    // may slip any amount); near it, the point is left out with a warning.
+    if (at_limit_of_equilibrium())
+      ++n_limit_points;
+    else if (at_limit_of_equilibrium(near_limit_margin))
+      ++n_unsolved;
+    else
+      return false;
+    return true;
   }
 
 
@@ -115,12 +132,11 @@ namespace FuzzyContact
         }
       catch (const ExceptionBase &)
         {
-          // At the limit of equilibrium the static answer is degenerate
-          // (a body about to slide may slip any amount): a solver that
-          // fails there counts the point as without equilibrium.
-          if (!can_lose_equilibrium() || !at_limit_of_equilibrium())
+          // At or near the limit of equilibrium a solver that fails
+          // counts the point as without equilibrium
+          // (n_unsolved_near_limit()).
+          if (!failure_counts_as_without_equilibrium())
             throw;
-          ++n_limit_points;
           return std::vector<double>();
         }
     });
@@ -165,9 +181,8 @@ namespace FuzzyContact
           if (!can_lose_equilibrium() || reduced_ranks == MPI_COMM_NULL)
             throw;
           reduced_model->set_state(state(values));
-          if (!at_limit_of_equilibrium())
+          if (!failure_counts_as_without_equilibrium())
             throw;
-          ++n_limit_points;
           return std::vector<double>();
         }
     });
@@ -178,6 +193,13 @@ namespace FuzzyContact
   FuzzyContactModel::n_at_limit_of_equilibrium() const
   {
     return n_limit_points;
+  }
+
+
+  unsigned long
+  FuzzyContactModel::n_unsolved_near_limit() const
+  {
+    return n_unsolved;
   }
 
 

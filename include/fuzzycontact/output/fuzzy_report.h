@@ -80,6 +80,13 @@ namespace FuzzyContact
     unsigned long n_at_limit = 0;
 
     /**
+     * Evaluations (over all ranks) near the limit of equilibrium whose
+     * solve failed, left out as without equilibrium
+     * (FuzzyContactModel::n_unsolved_near_limit()).
+     */
+    unsigned long n_unsolved_near_limit = 0;
+
+    /**
      * What the model built in @p offline_time [s] is: its DoFs and outputs.
      */
     void
