@@ -10,6 +10,7 @@
 #include <fuzzycontact/base/input.h>
 #include <fuzzycontact/contact/active_set_solver.h>
 #include <fuzzycontact/contact/contact_workspace.h>
+#include <fuzzycontact/contact/static_equilibrium.h>
 #include <fuzzycontact/contact/status_system.h>
 
 #include <deal.II/base/exceptions.h>

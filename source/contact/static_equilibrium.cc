@@ -1,9 +1,9 @@
 // The static equilibrium of bodies held by contact alone: whether contact
 // forces in the friction cones can balance their loads (Lawson and
 // Hanson's NNLS on the cones' edges), the friction a load would need, and
-// the check of a whole problem's load stages (contact_problem.h).
+// the check of a whole problem's load stages (static_equilibrium.h).
 
-#include <fuzzycontact/contact/contact_problem.h>
+#include <fuzzycontact/contact/static_equilibrium.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/lac/lapack_full_matrix.h>

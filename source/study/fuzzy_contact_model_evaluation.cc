@@ -5,6 +5,7 @@
 // they lie.
 
 #include <fuzzycontact/base/input.h>
+#include <fuzzycontact/contact/static_equilibrium.h>
 #include <fuzzycontact/fuzzy/global_stage.h>
 #include <fuzzycontact/study/fuzzy_contact_model.h>
 

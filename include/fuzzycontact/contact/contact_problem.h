@@ -61,8 +61,8 @@
 // residual is measured per motion relative to sum_j |G_j p_j| + |lambda
 // e|. A load no admissible contact forces can balance (p_n >= 0, |p_t| <=
 // mu p_n: a block on a slope steeper than its friction angle) has no
-// static solution; check_equilibrium() says so (the exact solver calls it
-// when its iterations fail).
+// static solution; check_equilibrium() (static_equilibrium.h) says so (the
+// exact solver calls it when its iterations fail).
 
 #ifndef fuzzycontact_contact_contact_problem_h
 #define fuzzycontact_contact_contact_problem_h
@@ -420,66 +420,6 @@ namespace FuzzyContact
   equilibrium_residual(const LoadStep       &step,
                        const Vector<double> &p,
                        const double          force_scale = 0);
-
-  /**
-   * Throws, naming @p what and the free motions, if no contact forces in
-   * the friction cones (p_n >= 0, |p_t| <= mu p_n) of the nodes can balance
-   * the step's load on the bodies held by contact alone: there is then no
-   * static solution (the body slides or lifts off). Nothing to check
-   * without such bodies. A bound-constrained least-squares problem
-   * (Lawson and Hanson's NNLS) on the cones' edges decides it.
-   */
-  void
-  check_equilibrium(const LoadStep            &step,
-                    const std::vector<double> &mu,
-                    const std::string         &what);
-
-  /**
-   * The least factor s in [@p low, @p high] such that the friction
-   * coefficients s @p mu can hold the bodies held by contact alone
-   * (admissible_forces()), by bisection (on a logarithmic scale if @p low
-   * > 0) to a relative width of 1e-12. The caller knows that @p high can
-   * hold them and @p low cannot.
-   */
-  double
-  least_friction_factor(const LoadStep            &step,
-                        const std::vector<double> &mu,
-                        double                     low,
-                        double                     high);
-
-  /**
-   * What check_equilibrium() throws (its message says why and what
-   * friction would hold the body). A study that varies loads or friction
-   * coefficients takes it as a result of the point, not as a failure
-   * (study/fuzzy_contact_model.h).
-   */
-  DeclException1(ExcNoStaticEquilibrium, std::string, << arg1);
-
-  /**
-   * Whether the problem's loads at @p load_factor have a static
-   * equilibrium (check_equilibrium() without the throw): true without
-   * bodies held by contact alone; else admissible_forces() at the end of
-   * every load stage (the resultants an equilibrium can take form a convex
-   * cone, so the stages' ends decide for every step between them). It
-   * depends on the friction coefficients, the loads and the geometry (the
-   * free motions' gaps G), not on the stiffness.
-   */
-  bool
-  has_static_equilibrium(const ContactProblem &problem,
-                         const double          load_factor = 1.);
-
-  /**
-   * Forces @p p in the friction cones of the nodes (coefficients @p mu)
-   * that balance the step's load on the bodies held by contact alone, at
-   * most one per free motion and cone edge (a basic solution of the NNLS
-   * problem of check_equilibrium()); false if there are none, with the
-   * unbalanced fraction of the load's resultant in @p unbalanced.
-   */
-  bool
-  admissible_forces(const LoadStep            &step,
-                    const std::vector<double> &mu,
-                    Vector<double>            &p,
-                    double                    *unbalanced = nullptr);
 
   /**
    * Throws, naming @p what and the motion, if neither the step's load nor

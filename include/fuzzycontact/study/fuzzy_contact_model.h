@@ -200,7 +200,7 @@ namespace FuzzyContact
 
     /**
      * Whether the loads at @p values have a static equilibrium
-     * (has_static_equilibrium() of contact_problem.h on the reduced
+     * (has_static_equilibrium() of contact/static_equilibrium.h on the reduced
      * problem, whose free motions and load resultants are exact): no
      * contact solve, a few microseconds to a millisecond. Only on the
      * ranks of reduced_communicator().
