@@ -9,6 +9,7 @@
 #include "active_set_method.h"
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -117,13 +118,18 @@ namespace FuzzyContact
     std::vector<double>       m(mu.size());
     ContactState              state;
     unsigned int              iterations = 0, solves = 0;
-    const auto                solve_at = [&](const double s) {
+    // The path as said in the final message: its first factor and the
+    // last that converged (0: none).
+    double     first = 0, reached = 0;
+    const auto solve_at = [&](const double s) {
       for (unsigned int k = 0; k < mu.size(); ++k)
         m[k] = s == 1 ? mu[k] : s * mu[k];
-      ++solves;
+      if (solves++ == 0)
+        first = s;
       state = ActiveSetMethod(W, ramped, m, parameters_, what).solve();
       iterations += state.iterations;
       ramped.previous = state;
+      reached         = s;
     };
     try
       {
@@ -159,14 +165,19 @@ namespace FuzzyContact
       }
     catch (const ExceptionBase &)
       {
-        AssertThrow(false,
-                    ExcMessage(message +
-                               " (Solved again from the previous load step's "
-                               "state, with slips allowed to reverse at "
-                               "once, and along a path of " +
-                               std::to_string(solves) +
-                               " friction coefficients ending at the "
-                               "given ones: no better.)"));
+        std::ostringstream said;
+        said << message
+             << " (Solved again from the previous load step's state, with "
+                "slips allowed to reverse at once, and along a path of "
+                "friction coefficients from "
+             << first << " times the given ones to them, " << solves
+             << " solve(s) each from the statuses of the last converged "
+                "one: ";
+        if (reached > 0)
+          said << "the last converged at " << reached << " times them.)";
+        else
+          said << "none converged.)";
+        AssertThrow(false, ExcMessage(said.str()));
       }
     state.iterations = iterations;
     return state;
