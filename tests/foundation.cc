@@ -1758,6 +1758,8 @@ TEST(MeshFiles, AFloatingBodyNeedsAContactPairAndAPositionItsContactFixes)
               std::string::npos)
       << m;
     EXPECT_NE(m.find("P2: translation along (0, 1)"), std::string::npos) << m;
+    // No other start changes that: the message is final, not retried.
+    EXPECT_EQ(m.find("Solved again"), std::string::npos) << m;
   }
   std::string alone = roller;
   alone.replace(alone.find("set contact pairs = interface"),

@@ -35,13 +35,10 @@ namespace FuzzyContact
   {
     AssertDimension(W.size(), 2 * mu.size());
     AssertDimension(step.g_free.size(), 2 * mu.size());
-    // A load no contact forces can balance, or a body whose position the
-    // contact does not determine, has no solution from any start: its
+    // A load no contact forces can balance (ExcNoStaticEquilibrium), or a
+    // body whose position the contact does not determine
+    // (ExcPositionNotDetermined), has no solution from any start: its
     // message is final.
-    const auto has_no_solution = [](const std::string &message) {
-      return message.find("no static equilibrium") != std::string::npos ||
-             message.find("is not determined") != std::string::npos;
-    };
     const bool held_with_friction =
       step.n_motions() > 0 && *std::max_element(mu.begin(), mu.end()) > 0;
     // The attempts, each under the same iteration limit, until one
@@ -85,16 +82,22 @@ namespace FuzzyContact
                                  attempt.stick_before_reversal)
             .solve();
         }
+      catch (const ExcNoStaticEquilibrium &)
+        {
+          throw;
+        }
+      catch (const ExcPositionNotDetermined &)
+        {
+          throw;
+        }
       catch (const ExceptionBase &e)
         {
-          const std::string said = Input::message_of(e);
           // (Without a ramp to follow, the last attempt's message is the
           // answer.)
-          if (has_no_solution(said) ||
-              (!held_with_friction && &attempt == &attempts.back()))
+          if (!held_with_friction && &attempt == &attempts.back())
             throw;
           if (attempt.step == &cold && attempt.stick_before_reversal)
-            message = said;
+            message = Input::message_of(e);
         }
 
     // A body held by contact alone turns in answer to the friction forces

@@ -462,16 +462,17 @@ namespace FuzzyContact
         for (unsigned int i = 0; i < p.size(); ++i)
           along += std::abs(step.rigid->gaps(i, j) * p[i]);
         AssertThrow(along > 1e-12 * total && total > 0,
-                    ExcMessage(what +
-                               ": the position of a body held by "
-                               "contact alone is not determined (load "
-                               "step " +
-                               std::to_string(step.step) +
-                               "): no load and no contact force acts along " +
-                               step.rigid->names[j] +
-                               ", so any position that does not penetrate "
-                               "is a solution. Hold it by a support, or load "
-                               "it onto its contact."));
+                    ExcPositionNotDetermined(
+                      what +
+                      ": the position of a body held by "
+                      "contact alone is not determined (load "
+                      "step " +
+                      std::to_string(step.step) +
+                      "): no load and no contact force acts along " +
+                      step.rigid->names[j] +
+                      ", so any position that does not penetrate "
+                      "is a solution. Hold it by a support, or load "
+                      "it onto its contact."));
       }
   }
 

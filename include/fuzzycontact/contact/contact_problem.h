@@ -435,6 +435,12 @@ namespace FuzzyContact
                            const double          force_scale = 0);
 
   /**
+   * What check_motions_determined() throws: no start or method of a
+   * solver changes it.
+   */
+  DeclException1(ExcPositionNotDetermined, std::string, << arg1);
+
+  /**
    * DoFs whose displacements a solver reports, per component: the
    * observations of a study (study/observations.h) ask for them, and every
    * solver returns the displacements there, even when it computes no
