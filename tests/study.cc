@@ -709,6 +709,63 @@ TEST(FloatingBodies, TwoStackedBodiesNearTheLimitOfSliding)
     }
 }
 
+// The key `Exact contact solver/max path solves` bounds that path: on the
+// same scene at mu = 0.2001 (which needs 12 solves on it), a limit of 3
+// makes the full-order solve fail with a message that gives the limit,
+// and the key refuses a limit below 1 naming itself.
+TEST(FloatingBodies, ThePathOfFrictionCoefficientsHasAKey)
+{
+  std::ifstream      in(source_dir + "/prm/bearing.prm");
+  std::ostringstream text;
+  text << in.rdbuf();
+  std::string t = text.str();
+  for (const auto &[from, to] :
+       std::vector<std::pair<std::string, std::string>>{
+         {"set friction coefficient = 0.4",
+          "set friction coefficient = 0.2001"},
+         {"set friction coefficient = 0.5", "set friction coefficient = 0.7"},
+         {"set total force = 2e4", "set total force = 4e4"},
+         {"set E = 15e9", "set E = 7.5e9"}})
+    t = replace(t, from, to);
+  const Scene  s = Scene::read_from_string(t, source_dir + "/prm/bearing.prm");
+  ContactScene bodies(s, 0);
+  const Observations  outputs({"plate-on-pedestal.Ft"}, bodies);
+  ActiveSetParameters limited;
+  limited.max_path_solves = 3;
+  FullOrderModel full(bodies, outputs.dofs(), limited);
+  full.set_state(SceneState(s));
+  std::string message;
+  try
+    {
+      full.solve();
+    }
+  catch (const ExceptionBase &e)
+    {
+      message = Input::message_of(e);
+    }
+  EXPECT_NE(message.find("3 solve(s) of at most 3"), std::string::npos)
+    << message;
+
+  ParameterHandler prm;
+  ActiveSetParameters::declare_parameters(prm);
+  prm.parse_input_from_string("subsection Exact contact solver\n"
+                              "set max path solves = 0\nend\n");
+  ActiveSetParameters parsed;
+  message.clear();
+  try
+    {
+      parsed.parse_parameters(prm);
+    }
+  catch (const ExceptionBase &e)
+    {
+      message = Input::message_of(e);
+    }
+  EXPECT_NE(message.find("max path solves must lie between 1 and 10000, "
+                         "got 0"),
+            std::string::npos)
+    << message;
+}
+
 // The same scene with sliding possible inside the fuzzy ranges (mu of the
 // plate 0.1 .. 0.3, the push 10 .. 40 kN) and the bed's modulus fuzzy, as
 // a fuzzy study evaluates it: 200 random points one after the other, each

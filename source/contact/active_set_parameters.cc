@@ -26,6 +26,15 @@ namespace FuzzyContact
                       "solver gives up with an error (its frictionless "
                       "start, which closes one node per iteration, may take "
                       "3 per slave node if that is more).");
+    prm.declare_entry("max path solves",
+                      "32",
+                      Patterns::Integer(),
+                      "Near the limit of sliding of bodies held by contact "
+                      "alone, a step that does not settle is solved along "
+                      "a path of friction coefficients down to the given "
+                      "ones (each solve halves the distance to the limit, "
+                      "a failed one is tried again closer to the last that "
+                      "converged); at most this many solves.");
     prm.leave_subsection();
   }
 
@@ -40,7 +49,13 @@ namespace FuzzyContact
                 ExcMessage("Exact contact solver: max iterations must be at "
                            "least 1, got " +
                            std::to_string(n) + "."));
-    max_iterations = n;
+    max_iterations    = n;
+    const long solves = prm.get_integer("max path solves");
+    AssertThrow(solves >= 1 && solves <= 10000,
+                ExcMessage("Exact contact solver: max path solves must lie "
+                           "between 1 and 10000, got " +
+                           std::to_string(solves) + "."));
+    max_path_solves = solves;
     prm.leave_subsection();
   }
 } // namespace FuzzyContact

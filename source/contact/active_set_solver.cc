@@ -109,8 +109,8 @@ namespace FuzzyContact
     //    least_friction_factor()), from s = s_min + 1 down to s = 1, the
     //    distance s - s_min to the limit of sliding at most halved per
     //    solve (a solve that fails is tried again closer to the last
-    //    converged one, the distance's ratio square-rooted, up to 4 times
-    //    in a row and 64 solves in all): far from the limit the iterations
+    //    converged one, the distance's ratio square-rooted; at most
+    //    max_path_solves solves): far from the limit the iterations
     //    settle, and each solve then starts from statuses near its own
     //    (near the limit nearly every node slips, and the few that stick
     //    decide the free motions);
@@ -141,22 +141,22 @@ namespace FuzzyContact
             const double s_min        = least_friction_factor(step, mu, 0, 1);
             const double final_margin = std::max(1 - s_min, 1e-12);
             double       margin = 1, next = 1;
-            unsigned int failures = 0;
             while (true)
               {
                 next = std::max(next, final_margin);
+                AssertThrow(solves < parameters_.max_path_solves,
+                            ExcMessage("the path's limit of solves"));
                 try
                   {
                     solve_at(next == final_margin ? 1. : s_min + next);
-                    margin   = next;
-                    failures = 0;
+                    margin = next;
                     if (margin == final_margin)
                       break;
                     next = margin / 2;
                   }
                 catch (const ExceptionBase &)
                   {
-                    if (margin == next || ++failures > 4 || solves >= 64)
+                    if (margin == next)
                       throw;
                     next = std::sqrt(margin * next);
                   }
@@ -174,8 +174,8 @@ namespace FuzzyContact
                 "slips allowed to reverse at once, and along a path of "
                 "friction coefficients from "
              << first << " times the given ones to them, " << solves
-             << " solve(s) each from the statuses of the last converged "
-                "one: ";
+             << " solve(s) of at most " << parameters_.max_path_solves
+             << ", each from the statuses of the last converged one: ";
         if (reached > 0)
           said << "the last converged at " << reached << " times them.)";
         else

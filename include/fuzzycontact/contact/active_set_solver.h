@@ -75,6 +75,14 @@ namespace FuzzyContact
      * that runs out of iterations.
      */
     std::string max_iterations_key = "Exact contact solver/max iterations";
+    /**
+     * Near the limit of sliding (bodies held by contact alone that need
+     * friction), the solves on the path of friction coefficients
+     * (active_set_solver.cc) before the step gives up. Each success at
+     * least halves the distance to the limit, and a path that needs all
+     * but 1e-6 of the friction takes 20 successful solves.
+     */
+    unsigned int max_path_solves = 32;
 
     static void
     declare_parameters(ParameterHandler &prm);
