@@ -522,6 +522,51 @@ namespace
     ASSERT_NE(at, std::string::npos) << m;
     EXPECT_NEAR(std::atof(m.c_str() + at + 11), needed, 1e-6 * needed) << m;
   }
+
+  // prm/bearing.prm (a column on a plate on a pedestal, both held by
+  // contact alone); with @p plate_mu, pushed until the plate nearly slides:
+  // 40 kN on 200 kN (the plate needs mu = 0.2), the plate's friction
+  // coefficient @p plate_mu, the column's 0.7, the bed at half its modulus.
+  Scene
+  bearing(const std::string &plate_mu = "")
+  {
+    std::ifstream      in(source_dir + "/prm/bearing.prm");
+    std::ostringstream text;
+    text << in.rdbuf();
+    std::string t = text.str();
+    if (!plate_mu.empty())
+      for (const auto &[from, to] :
+           std::vector<std::pair<std::string, std::string>>{
+             {"set friction coefficient = 0.4",
+              "set friction coefficient = " + plate_mu},
+             {"set friction coefficient = 0.5",
+              "set friction coefficient = 0.7"},
+             {"set total force = 2e4", "set total force = 4e4"},
+             {"set E = 15e9", "set E = 7.5e9"}})
+        t = replace(t, from, to);
+    return Scene::read_from_string(t, source_dir + "/prm/bearing.prm");
+  }
+
+  // The bearing with sliding possible inside the fuzzy ranges, as
+  // prm/step-4-bearing-sliding.prm makes it: the bed's modulus (+-50 %),
+  // the plate's mu 0.1 .. 0.3, the column's 0.3 .. 0.7, the push 10 .. 40
+  // kN.
+  FuzzyParameterSet
+  bearing_sliding_parameters(const Scene &s)
+  {
+    return fuzzy_parameters(
+      s,
+      "set fuzzy parameters = Pedestal.bed.E, plate-on-pedestal.mu, "
+      "column-on-plate.mu, Column.push.force\n"
+      "subsection Fuzzy parameter Pedestal.bed.E\nset values = 0.5, 1, 1.5\n"
+      "set relative = true\nend\n"
+      "subsection Fuzzy parameter plate-on-pedestal.mu\n"
+      "set values = 0.1, 0.2, 0.3\nend\n"
+      "subsection Fuzzy parameter column-on-plate.mu\n"
+      "set values = 0.3, 0.5, 0.7\nend\n"
+      "subsection Fuzzy parameter Column.push.force\n"
+      "set values = 10e3, 20e3, 40e3\nend\n");
+  }
 } // namespace
 
 // A block on a 20-degree slope, pressed by a vertical force F on its top
@@ -672,23 +717,9 @@ TEST(FloatingBodies, RollerWithLittleFriction)
 // the press and the push.
 TEST(FloatingBodies, TwoStackedBodiesNearTheLimitOfSliding)
 {
-  std::ifstream      in(source_dir + "/prm/bearing.prm");
-  std::ostringstream text;
-  text << in.rdbuf();
   for (const std::string mu : {"0.202173", "0.2001"})
     {
-      std::string t = text.str();
-      for (const auto &[from, to] :
-           std::vector<std::pair<std::string, std::string>>{
-             {"set friction coefficient = 0.4",
-              "set friction coefficient = " + mu},
-             {"set friction coefficient = 0.5",
-              "set friction coefficient = 0.7"},
-             {"set total force = 2e4", "set total force = 4e4"},
-             {"set E = 15e9", "set E = 7.5e9"}})
-        t = replace(t, from, to);
-      const Scene s =
-        Scene::read_from_string(t, source_dir + "/prm/bearing.prm");
+      const Scene  s     = bearing(mu);
       const double press = 2e5, push = 4e4;
       const auto   v = three_ways(s,
                                 {"plate-on-pedestal.Fn",
@@ -715,20 +746,8 @@ TEST(FloatingBodies, TwoStackedBodiesNearTheLimitOfSliding)
 // and the key refuses a limit below 1 naming itself.
 TEST(FloatingBodies, ThePathOfFrictionCoefficientsHasAKey)
 {
-  std::ifstream      in(source_dir + "/prm/bearing.prm");
-  std::ostringstream text;
-  text << in.rdbuf();
-  std::string t = text.str();
-  for (const auto &[from, to] :
-       std::vector<std::pair<std::string, std::string>>{
-         {"set friction coefficient = 0.4",
-          "set friction coefficient = 0.2001"},
-         {"set friction coefficient = 0.5", "set friction coefficient = 0.7"},
-         {"set total force = 2e4", "set total force = 4e4"},
-         {"set E = 15e9", "set E = 7.5e9"}})
-    t = replace(t, from, to);
-  const Scene  s = Scene::read_from_string(t, source_dir + "/prm/bearing.prm");
-  ContactScene bodies(s, 0);
+  const Scene         s = bearing("0.2001");
+  ContactScene        bodies(s, 0);
   const Observations  outputs({"plate-on-pedestal.Ft"}, bodies);
   ActiveSetParameters limited;
   limited.max_path_solves = 3;
@@ -778,23 +797,8 @@ TEST(FloatingBodies, ThePathOfFrictionCoefficientsHasAKey)
 // it without the retry, and this test then proves less.)
 TEST(FloatingBodies, AFailedWarmStartGivesWayToTheLoadPath)
 {
-  std::ifstream      in(source_dir + "/prm/bearing.prm");
-  std::ostringstream text;
-  text << in.rdbuf();
-  const Scene s =
-    Scene::read_from_string(text.str(), source_dir + "/prm/bearing.prm");
-  const FuzzyParameterSet set = fuzzy_parameters(
-    s,
-    "set fuzzy parameters = Pedestal.bed.E, plate-on-pedestal.mu, "
-    "column-on-plate.mu, Column.push.force\n"
-    "subsection Fuzzy parameter Pedestal.bed.E\nset values = 0.5, 1, 1.5\n"
-    "set relative = true\nend\n"
-    "subsection Fuzzy parameter plate-on-pedestal.mu\n"
-    "set values = 0.1, 0.2, 0.3\nend\n"
-    "subsection Fuzzy parameter column-on-plate.mu\n"
-    "set values = 0.3, 0.5, 0.7\nend\n"
-    "subsection Fuzzy parameter Column.push.force\n"
-    "set values = 10e3, 20e3, 40e3\nend\n");
+  const Scene               s   = bearing();
+  const FuzzyParameterSet   set = bearing_sliding_parameters(s);
   FuzzyContactModelSettings settings;
   settings.mesh_refinements = 0;
   settings.contact_solver   = "reduced exact";
@@ -838,23 +842,8 @@ TEST(FloatingBodies, AFailedWarmStartGivesWayToTheLoadPath)
 // then says so.)
 TEST(FloatingBodies, AFailureNearTheLimitOfSlidingLeavesThePointOut)
 {
-  std::ifstream      in(source_dir + "/prm/bearing.prm");
-  std::ostringstream text;
-  text << in.rdbuf();
-  const Scene s =
-    Scene::read_from_string(text.str(), source_dir + "/prm/bearing.prm");
-  const FuzzyParameterSet set = fuzzy_parameters(
-    s,
-    "set fuzzy parameters = Pedestal.bed.E, plate-on-pedestal.mu, "
-    "column-on-plate.mu, Column.push.force\n"
-    "subsection Fuzzy parameter Pedestal.bed.E\nset values = 0.5, 1, 1.5\n"
-    "set relative = true\nend\n"
-    "subsection Fuzzy parameter plate-on-pedestal.mu\n"
-    "set values = 0.1, 0.2, 0.3\nend\n"
-    "subsection Fuzzy parameter column-on-plate.mu\n"
-    "set values = 0.3, 0.5, 0.7\nend\n"
-    "subsection Fuzzy parameter Column.push.force\n"
-    "set values = 10e3, 20e3, 40e3\nend\n");
+  const Scene                    s       = bearing();
+  const FuzzyParameterSet        set     = bearing_sliding_parameters(s);
   const std::vector<std::string> outputs = {"plate-on-pedestal.Fn",
                                             "plate-on-pedestal.Ft"};
   FuzzyContactModelSettings      settings;
