@@ -21,6 +21,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <set>
 
@@ -1351,6 +1352,28 @@ end
   EXPECT_LT(worst_of[2], 1e-8);
 }
 
+
+// A level where no point had outputs (no equilibrium anywhere in its box,
+// or every point left out near the limit of sliding) has no bound and no
+// argument: nothing to prove, so it is not unproven either (the proofs'
+// feedback once asked for an exact snapshot at the empty point, and the
+// study stopped). The level with a bound is judged as before.
+TEST(ProofFeedback, ALevelWithoutABoundHasNothingToProve)
+{
+  const double      nan = std::numeric_limits<double>::quiet_NaN();
+  FuzzyOutputBounds b;
+  b.bounds = {{Interval{1., 2.}, Interval{nan, nan}}};
+  b.argmin = {{{0.1}, {}}};
+  b.argmax = {{{0.2}, {}}};
+  BoundProofs p;
+  p.lower = {{BoundProof{1., 1.5}, BoundProof{nan, nan}}};
+  p.upper = {{BoundProof{2., 2.}, BoundProof{nan, nan}}};
+  const std::vector<UnprovenBound> u = unproven_bounds(b, p, 1e-4, 1e-7);
+  ASSERT_EQ(u.size(), 1u);
+  EXPECT_EQ(u[0].level, 0u);
+  EXPECT_FALSE(u[0].upper);
+  EXPECT_EQ(u[0].argument, std::vector<double>{0.1});
+}
 
 // The proofs feed back (fuzzy/proof_feedback.h): a deliberately poor model
 // (three modes, no static correction) leaves the bounds of the default

@@ -150,6 +150,13 @@ namespace FuzzyContact
         for (unsigned int l = 0; l < bounds.bounds[k].size(); ++l)
           for (const bool upper : {false, true})
             {
+              const std::vector<double> &argument =
+                upper ? bounds.argmax[k][l] : bounds.argmin[k][l];
+              // A level without any point with outputs has no bound (n/a:
+              // no equilibrium, or every point left out near its limit),
+              // and nothing to prove.
+              if (argument.empty())
+                continue;
               const BoundProof &p =
                 upper ? proofs.upper[k][l] : proofs.lower[k][l];
               const double d = p.difference();
@@ -159,13 +166,7 @@ namespace FuzzyContact
                   ? std::abs(d) / range
                   : (d == 0 ? 0. : std::numeric_limits<double>::infinity());
               if (!(relative <= tolerance) && !(std::abs(d) <= floor))
-                result.push_back(
-                  {k,
-                   l,
-                   upper,
-                   d,
-                   relative,
-                   upper ? bounds.argmax[k][l] : bounds.argmin[k][l]});
+                result.push_back({k, l, upper, d, relative, argument});
             }
       }
     return result;
@@ -198,8 +199,11 @@ namespace FuzzyContact
                                           settings.tolerance,
                                           settings.accuracy);
         this_round.n_unproven = result.unproven.size();
+        // (n/a if a bound has no exact value to compare with.)
         for (const UnprovenBound &u : result.unproven)
-          this_round.largest = std::max(this_round.largest, u.relative);
+          this_round.largest = std::isnan(u.relative)
+                                 ? u.relative
+                                 : std::max(this_round.largest, u.relative);
         if (result.unproven.empty())
           {
             result.rounds.push_back(this_round);

@@ -26,11 +26,12 @@ namespace FuzzyContact
     }
 
     // A number for results.json: null for NaN (no bound, or no exact
-    // value: no static equilibrium there).
+    // value: no static equilibrium there, or a point left out near it) and
+    // for infinity.
     nlohmann::json
     value(const double x)
     {
-      return std::isnan(x) ? nlohmann::json() : nlohmann::json(x);
+      return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json();
     }
 
     // "vertex", "boundary (P1.E)", "interior, kink in P1.tip.force",
@@ -432,7 +433,7 @@ namespace FuzzyContact
           rounds.push_back({{"evaluations", p.evaluations},
                             {"exact_solves", p.proofs},
                             {"n_unproven", p.n_unproven},
-                            {"largest_relative_error", p.largest},
+                            {"largest_relative_error", value(p.largest)},
                             {"vectors_added", p.added},
                             {"search_time_s", p.search_time},
                             {"proof_time_s", p.proof_time},
@@ -474,8 +475,8 @@ namespace FuzzyContact
           unproven.push_back({{"output", name},
                               {"alpha", r.alpha[u.level]},
                               {"side", u.upper ? "upper" : "lower"},
-                              {"difference", u.difference},
-                              {"relative_error", u.relative},
+                              {"difference", value(u.difference)},
+                              {"relative_error", value(u.relative)},
                               {"argument", u.argument}});
         }
       if (!r.unproven.empty())

@@ -97,7 +97,8 @@ namespace FuzzyContact
   /**
    * The bounds of @p bounds whose proofs @p proofs exceed both @p tolerance
    * of their output's range and @p accuracy of its magnitude, in the order
-   * output, level, side.
+   * output, level, side. A bound without an argument (n/a: no point of its
+   * level had outputs) is not one of them: there is nothing to prove.
    */
   std::vector<UnprovenBound>
   unproven_bounds(const FuzzyOutputBounds &bounds,
