@@ -13,12 +13,16 @@
 #include <fuzzycontact/scene/scene_limits.h>
 #include <fuzzycontact/study/input_checks.h>
 
+#include <nlohmann/json.hpp>
+
 #include <gtest/gtest.h>
 
 #include "test_utilities.h"
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <limits>
 #include <tuple>
 
 using namespace FuzzyContact;
@@ -274,6 +278,46 @@ TEST(Limits, OutputDirectoryCheckedUpFront)
             std::string::npos);
 }
 
+
+// results.json queued as JSON keeps its nulls (a level without bounds, a
+// proof without an exact value: n/a, as doc/fuzzy-study.md says) and is
+// written; a NaN among its numbers is refused, writing nothing. Queued as
+// text, a null is still taken for a NaN the dump turned into null (step-4's
+// results were refused whole for their n/a values before).
+TEST(Output, JsonNullsAreValuesAndItsNaNsAreRefused)
+{
+  const fs::path where = fs::temp_directory_path() / "fuzzycontact-json-test";
+  fs::remove_all(where);
+  const auto written = [&](const std::function<void(OutputFiles &)> &queue) {
+    fs::remove_all(where);
+    OutputFiles files(where.string());
+    queue(files);
+    try
+      {
+        files.write_all();
+      }
+    catch (const dealii::ExceptionBase &)
+      {
+        return false;
+      }
+    return fs::exists(where / "results.json");
+  };
+  nlohmann::json n_a;
+  n_a["bounds"] = {1.5, nullptr};
+  EXPECT_TRUE(written([&](OutputFiles &f) {
+    f.add_json("results.json", n_a);
+  }));
+  nlohmann::json nan;
+  nan["bounds"] = {1.5, std::numeric_limits<double>::quiet_NaN()};
+  EXPECT_FALSE(written([&](OutputFiles &f) {
+    f.add_json("results.json", nan);
+  }));
+  EXPECT_FALSE(fs::exists(where / "results.json"));
+  EXPECT_FALSE(written([&](OutputFiles &f) {
+    f.add("results.json", n_a.dump(2));
+  }));
+  fs::remove_all(where);
+}
 
 TEST(Output, WrittenAsOneSetReplacingTheOldOne)
 {

@@ -456,7 +456,7 @@ namespace FuzzyContact
       OutputFiles output(directory);
       plot(results, output, report);
       output.add("report.txt", report.text());
-      output.add("results.json", json.dump(2) + "\n");
+      output.add_json("results.json", json);
       output.write_all();
       std::cout << "\nWrote report.txt, results.json and membership.png (.dat, "
                    ".gp) to "

@@ -10,7 +10,10 @@
 #ifndef fuzzycontact_output_output_files_h
 #define fuzzycontact_output_output_files_h
 
+#include <nlohmann/json.hpp>
+
 #include <map>
+#include <set>
 #include <string>
 
 namespace FuzzyContact
@@ -35,6 +38,15 @@ namespace FuzzyContact
     add(const std::string &filename, std::string content);
 
     /**
+     * Queues a JSON file. Its numbers are checked here: a NaN or an
+     * infinity among them is refused by write_all(), while its nulls are
+     * the writer's own "no value" (n/a: a level without bounds, a proof
+     * without an exact value), not a NaN that the dump turned into null.
+     */
+    void
+    add_json(const std::string &filename, const nlohmann::json &content);
+
+    /**
      * Writes every queued file, replacing the whole folder at once (see
      * the top of this file). Throws, writing nothing, if a text file holds
      * a NaN or an infinity or if a LAPACK error is pending.
@@ -48,6 +60,9 @@ namespace FuzzyContact
   private:
     std::string                        directory_;
     std::map<std::string, std::string> files_;
+    // JSON files queued as JSON (their nulls are values), and those of
+    // them with a non-finite number.
+    std::set<std::string> json_files_, non_finite_;
   };
 
 } // namespace FuzzyContact
