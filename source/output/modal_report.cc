@@ -301,7 +301,7 @@ namespace FuzzyContact
   ModalReport::write()
   {
     output.add("report.txt", report.text());
-    output.add("results.json", results.dump(2) + "\n");
+    output.add_json("results.json", results);
     output.write_all();
     std::cout << "\nWrote report.txt, results.json and modes-*.vtu to "
               << output.directory() << "/" << std::endl;

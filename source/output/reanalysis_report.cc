@@ -307,7 +307,7 @@ namespace FuzzyContact
   ReanalysisReport::write()
   {
     output.add("report.txt", report.text());
-    output.add("results.json", results.dump(2) + "\n");
+    output.add_json("results.json", results);
     output.write_all();
     std::cout << "\nWrote report.txt and results.json to " << output.directory()
               << "/" << std::endl;

@@ -426,7 +426,7 @@ namespace Step3
     {
       TimerOutput::Scope scope(timer, "output");
       output.add("report.txt", report.text());
-      output.add("results.json", results.dump(2) + "\n");
+      output.add_json("results.json", results);
       output.write_all();
     }
     std::cout << "\nWrote report.txt, results.json"
