@@ -96,10 +96,12 @@ namespace FuzzyContact
 
     // A text output that carries a NaN or an infinity (as C++ streams and
     // nlohmann::json print them) is a failed computation, never a result.
+    // (In a JSON file queued as text, a null is a NaN that the dump turned
+    // into null; OutputFiles::add_json checks the numbers instead.)
     bool
     has_non_finite(const std::string &name,
                    const std::string &content,
-                   const bool         nulls_are_values = false)
+                   const bool         nulls_are_values)
     {
       const std::string extension = fs::path(name).extension().string();
       if (extension != ".json" && extension != ".txt" && extension != ".dat")
@@ -158,8 +160,7 @@ namespace FuzzyContact
   OutputFiles::add(const std::string &filename, std::string content)
   {
     files_[filename] = std::move(content);
-    json_files_.erase(filename);
-    non_finite_.erase(filename);
+    json_non_finite_.erase(filename);
   }
 
 
@@ -167,12 +168,8 @@ namespace FuzzyContact
   OutputFiles::add_json(const std::string    &filename,
                         const nlohmann::json &content)
   {
-    files_[filename] = content.dump(2) + "\n";
-    json_files_.insert(filename);
-    if (has_non_finite_number(content))
-      non_finite_.insert(filename);
-    else
-      non_finite_.erase(filename);
+    files_[filename]           = content.dump(2) + "\n";
+    json_non_finite_[filename] = has_non_finite_number(content);
   }
 
 
@@ -182,15 +179,18 @@ namespace FuzzyContact
     // Nothing is written after a LAPACK error or with a non-finite number.
     LapackErrors::check("Writing the results to <" + directory_ + ">");
     for (const auto &[name, content] : files_)
-      AssertThrow(non_finite_.count(name) == 0 &&
-                    !has_non_finite(name, content, json_files_.count(name) > 0),
-                  ExcMessage(
-                    "The results contain a value that is not a finite "
-                    "number (NaN or infinity, in " +
-                    name + "), so nothing was written to <" + directory_ +
-                    ">: an input made the computation overflow. Check the "
-                    "magnitudes of the loads, moduli, densities and "
-                    "friction coefficients."));
+      {
+        const auto json    = json_non_finite_.find(name);
+        const bool is_json = json != json_non_finite_.end();
+        AssertThrow(
+          !(is_json && json->second) && !has_non_finite(name, content, is_json),
+          ExcMessage("The results contain a value that is not a finite "
+                     "number (NaN or infinity, in " +
+                     name + "), so nothing was written to <" + directory_ +
+                     ">: an input made the computation overflow. Check the "
+                     "magnitudes of the loads, moduli, densities and "
+                     "friction coefficients."));
+      }
 
     fs::path target = fs::path(directory_).lexically_normal();
     if (target.filename().empty())

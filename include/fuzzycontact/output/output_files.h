@@ -13,7 +13,6 @@
 #include <nlohmann/json.hpp>
 
 #include <map>
-#include <set>
 #include <string>
 
 namespace FuzzyContact
@@ -60,9 +59,9 @@ namespace FuzzyContact
   private:
     std::string                        directory_;
     std::map<std::string, std::string> files_;
-    // JSON files queued as JSON (their nulls are values), and those of
-    // them with a non-finite number.
-    std::set<std::string> json_files_, non_finite_;
+    // The files queued as JSON (their nulls are values): whether a number
+    // of theirs is not finite.
+    std::map<std::string, bool> json_non_finite_;
   };
 
 } // namespace FuzzyContact
