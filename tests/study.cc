@@ -878,6 +878,93 @@ TEST(FloatingBodies, AFailureNearTheLimitOfSlidingLeavesThePointOut)
   EXPECT_EQ(strict.n_unsolved_near_limit(), 0u);
 }
 
+// A pin in the bore of a lug (prm/pin.prm), held by contact alone, under a
+// load whose line of action misses the bore's centre: the friction in the
+// bore holds its torque. Statics: the normal forces pass through the bore's
+// centre (its normals are radial), so the contact's moment about it is the
+// friction's, F_t R_b, and balances the load's, T = F d_x (2 R / pi - e)
+// for the uniform traction F d on the pin's upper half (R = 10 mm, its
+// centroid 2 R / pi above the pin's centre, which lies e = 0.05 mm below
+// the bore's; R_b = 10.05 mm). The pin needs mu >= mu_s = F_t / F_n, the
+// whole patch slipping. Above mu_s the answer stays within small sliding;
+// below it the linear problem holds the pin only after it slid by metres
+// against the bore's frozen normals (the static equilibrium test, which
+// balances resultants only, says the cones hold it), which the models
+// refuse (ExcBeyondSmallSliding) and a study counts as without
+// equilibrium, or, where the solver fails, leaves out when more friction
+// answers within small sliding.
+TEST(FloatingBodies, APinInItsBoreSlidesBeyondSmallSlidingBelowStatics)
+{
+  const Scene    s = scene("pin");
+  ContactScene   bodies(s, 0);
+  FullOrderModel full(bodies, ObservedDofs(2));
+  SceneState     state(s);
+  ASSERT_EQ(state.friction_coefficients.size(), 1u);
+  full.set_state(state);
+  const double F = 2e5, d_x = 0.2 / std::sqrt(1.04), R = 10e-3, e = 0.05e-3,
+               R_b = 10.05e-3;
+  const double T   = F * d_x * (2 * R / M_PI - e);
+  const auto   pin = [&](const ContactSolution &solution) {
+    // The contact forces' moment on the pin about the bore's centre.
+    double moment = 0;
+    for (unsigned int k = 0; k < solution.n_nodes(); ++k)
+      {
+        const ContactNode &node = bodies.interface().nodes()[k];
+        const Tensor<1, 2> f =
+          solution.p_n(k) * node.normal + solution.p_t(k) * node.tangent;
+        const Tensor<1, 2> r = node.slave.position - Point<2>(0.04, 0.03);
+        moment += r[0] * f[1] - r[1] * f[0];
+      }
+    return moment;
+  };
+  const ContactSolution nominal = full.solve(); // mu = 0.15
+  EXPECT_NEAR(std::abs(pin(nominal)), T, 1e-3 * T);
+  EXPECT_NEAR(std::abs(nominal.tangential_force), T / R_b, 1e-3 * T / R_b);
+  EXPECT_LT(largest_sliding(bodies.interface(), nominal).ratio, 0.5);
+  const double mu_s = T / R_b / nominal.normal_force;
+
+  state.friction_coefficients = {1.01 * mu_s};
+  full.set_state(state);
+  const ContactSolution above = full.solve();
+  EXPECT_NEAR(std::abs(above.tangential_force), T / R_b, 1e-3 * T / R_b);
+  EXPECT_LT(largest_sliding(bodies.interface(), above).ratio, 0.5);
+  EXPECT_GE(above.count(ContactStatus::slip), 1u);
+
+  state.friction_coefficients = {0.93 * mu_s};
+  full.set_state(state);
+  EXPECT_THROW(full.solve(), ExcBeyondSmallSliding);
+
+  // The study: the same points, and one where the solvers fail.
+  const FuzzyParameterSet set =
+    fuzzy_parameters(s,
+                     "set fuzzy parameters = Lug.E, bore.mu, Pin.press.force\n"
+                     "subsection Fuzzy parameter Lug.E\n"
+                     "set values = 0.8, 1, 1.2\nset relative = true\nend\n"
+                     "subsection Fuzzy parameter bore.mu\n"
+                     "set values = 0.05, 0.15, 0.25\nend\n"
+                     "subsection Fuzzy parameter Pin.press.force\n"
+                     "set values = 1e5, 2e5, 3e5\nend\n");
+  FuzzyContactModelSettings settings;
+  settings.mesh_refinements = 0;
+  settings.contact_solver   = "reduced exact";
+  FuzzyContactModel         model(s, set, {"bore.Fn", "bore.Ft"}, settings);
+  const std::vector<double> v = model.reduced({210e9, 1.01 * mu_s, F});
+  ASSERT_EQ(v.size(), 2u);
+  EXPECT_NEAR(std::abs(v[1]), T / R_b, 1e-3 * T / R_b);
+  EXPECT_TRUE(model.reduced({210e9, 0.93 * mu_s, F}).empty());
+  EXPECT_EQ(model.n_beyond_small_sliding(), 1u);
+  EXPECT_TRUE(model.full_order({210e9, 0.93 * mu_s, F}).empty());
+  EXPECT_EQ(model.n_beyond_small_sliding(), 2u);
+  // At 0.98 mu_s every solve fails (the active set cycles); more friction
+  // answers within small sliding, none beyond it.
+  EXPECT_TRUE(model.reduced({210e9, 0.98 * mu_s, F}).empty());
+  EXPECT_EQ(model.n_beyond_small_sliding() +
+              model.n_unsolved_below_sliding_limit(),
+            3u);
+  EXPECT_EQ(model.n_unsolved_near_limit(), 0u);
+  EXPECT_LE(model.unsolved_sliding_factor(), 1.125);
+}
+
 // ----------------------------------------------------------------------------
 // Body weight (gravity)
 // ----------------------------------------------------------------------------

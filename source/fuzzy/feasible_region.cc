@@ -98,14 +98,16 @@ namespace FuzzyContact
 
     // Along the edge of the box from vertex @p from (no solution) to @p to
     // (a solution), which differ in parameter @p d: the point nearest to
-    // @p from with a solution, to 1e-10 of the edge.
+    // @p from with a solution, to 1e-10 of the edge, by bisection between
+    // the fractions @p out (no solution) and @p in (a solution).
     std::vector<double>
     crossing(const std::vector<double> &from,
              const std::vector<double> &to,
              const unsigned int         d,
-             Memo                      &feasible)
+             Memo                      &feasible,
+             double                     out = 0,
+             double                     in  = 1)
     {
-      double              out = 0, in = 1; // fractions of the edge
       std::vector<double> p = from;
       for (unsigned int i = 0; i < 40 && in - out > 1e-10; ++i)
         {
@@ -116,6 +118,24 @@ namespace FuzzyContact
       p[d] = in == 1 ? to[d] : from[d] + in * (to[d] - from[d]);
       return p;
     }
+
+    // The same with a cheap necessary check: its crossing first, which is
+    // the whole check's if the whole check holds there (the part of the
+    // edge with a solution of the whole check lies inside the cheap one's);
+    // else the whole check's bisection from there on.
+    std::vector<double>
+    crossing(const std::vector<double> &from,
+             const std::vector<double> &to,
+             const unsigned int         d,
+             Memo                      &feasible,
+             Memo                      &necessary)
+    {
+      const std::vector<double> p = crossing(from, to, d, necessary);
+      if (feasible(p))
+        return p;
+      const double width = to[d] - from[d];
+      return crossing(from, to, d, feasible, (p[d] - from[d]) / width, 1);
+    }
   } // namespace
 
 
@@ -123,11 +143,13 @@ namespace FuzzyContact
   feasible_region(const std::vector<FuzzyNumber> &parameters,
                   const std::vector<double>      &alpha,
                   const Feasibility              &feasibility,
-                  const unsigned int              design_points)
+                  const unsigned int              design_points,
+                  const Feasibility              &necessary_check)
   {
-    Timer                           timer;
-    Memo                            feasible(feasibility);
-    FeasibleRegion                  region;
+    Timer          timer;
+    Memo           feasible(feasibility);
+    Memo           necessary(necessary_check ? necessary_check : feasibility);
+    FeasibleRegion region;
     const std::vector<unsigned int> free = free_parameters(parameters);
     AssertThrow(free.size() < 20,
                 ExcMessage("The feasible region is found on the vertices of "
@@ -149,6 +171,9 @@ namespace FuzzyContact
           point = point && box[d].width() == 0;
         const unsigned long n_corners = point ? 1 : 1ul << free.size();
         long                first     = -1;
+        // A vertex the whole check refused and the cheap one accepted:
+        // the design points need the whole check too.
+        bool whole = !necessary_check;
         for (unsigned long c = 0; c < n_corners; ++c)
           {
             const bool ok = feasible(vertex(box, free, c));
@@ -156,6 +181,8 @@ namespace FuzzyContact
             level.n_vertices_feasible += ok;
             if (!ok && first < 0)
               first = c;
+            if (!ok && !whole)
+              whole = necessary(vertex(box, free, c));
           }
         if (!point)
           for (const auto &u : design)
@@ -164,7 +191,7 @@ namespace FuzzyContact
               for (unsigned int i = 0; i < free.size(); ++i)
                 p[free[i]] = box[free[i]].lower + u[i] * box[free[i]].width();
               ++level.n_design;
-              level.n_design_feasible += feasible(p);
+              level.n_design_feasible += whole ? feasible(p) : necessary(p);
             }
         level.possible = first >= 0 || level.n_design_feasible < level.n_design;
         if (first < 0 && level.possible)
@@ -178,9 +205,12 @@ namespace FuzzyContact
                   const std::vector<double> neighbour =
                     vertex(box, free, first ^ (1ul << i));
                   if (feasible(neighbour))
-                    level.boundary.push_back(
-                      {free[i],
-                       crossing(level.vertex, neighbour, free[i], feasible)});
+                    level.boundary.push_back({free[i],
+                                              crossing(level.vertex,
+                                                       neighbour,
+                                                       free[i],
+                                                       feasible,
+                                                       necessary)});
                 }
           }
         region.possible = region.possible || level.possible;
@@ -199,7 +229,29 @@ namespace FuzzyContact
       }
     else if (infeasible_corner(parameters, free, 0., feasible) >= 0)
       {
+        // The cheap check's membership first (every box with a vertex
+        // without its solution has one without the whole check's), then
+        // the whole check's above it.
         double with = 0, without = 1;
+        if (necessary_check &&
+            infeasible_corner(parameters, free, 0., necessary) >= 0)
+          {
+            for (unsigned int i = 0; i < 60 && without - with > 1e-12; ++i)
+              {
+                const double middle = 0.5 * (with + without);
+                (infeasible_corner(parameters, free, middle, necessary) >= 0
+                   ? with
+                   : without)       = middle;
+              }
+            // (The boxes shrink as alpha grows: if the whole check holds
+            // at every vertex there, its membership lies in [with,
+            // without] too.)
+            if (infeasible_corner(parameters, free, without, feasible) >= 0)
+              {
+                with    = without;
+                without = 1;
+              }
+          }
         for (unsigned int i = 0; i < 60 && without - with > 1e-12; ++i)
           {
             const double middle = 0.5 * (with + without);
@@ -220,8 +272,9 @@ namespace FuzzyContact
           region.membership = level.alpha;
           region.starts_at.clear();
         }
-    region.n_evaluations = feasible.size();
-    region.wall_time     = timer.wall_time();
+    region.n_evaluations =
+      feasible.size() + (necessary_check ? necessary.size() : 0);
+    region.wall_time = timer.wall_time();
     return region;
   }
 
@@ -232,12 +285,17 @@ namespace FuzzyContact
                            const Feasibility              &feasible,
                            const unsigned int              design_points,
                            const MPI_Comm                  comm,
-                           const MPI_Comm                  solving)
+                           const MPI_Comm                  solving,
+                           const Feasibility              &necessary)
   {
     const bool parallel = Utilities::MPI::job_supports_mpi() &&
                           Utilities::MPI::n_mpi_processes(comm) > 1;
     if (!parallel)
-      return feasible_region(parameters, alpha, feasible, design_points);
+      return feasible_region(parameters,
+                             alpha,
+                             feasible,
+                             design_points,
+                             necessary);
     // The lowest rank of @p comm among the solving ones sends the result.
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
     const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
@@ -247,7 +305,8 @@ namespace FuzzyContact
                 ExcMessage("No MPI rank can evaluate the feasibility."));
     FeasibleRegion region;
     if (solving != MPI_COMM_NULL)
-      region = feasible_region(parameters, alpha, feasible, design_points);
+      region =
+        feasible_region(parameters, alpha, feasible, design_points, necessary);
     return Utilities::MPI::broadcast(comm, region, root);
   }
 } // namespace FuzzyContact

@@ -85,7 +85,8 @@ namespace FuzzyContact
         out << "  sliding is not possible: every point of every alpha-box "
                "has a static equilibrium (the vertices of every box and "
             << (e.levels.empty() ? 0 : e.levels.front().n_design)
-            << " design points per box checked)\n";
+            << " design points per box checked; the vertices also by a "
+               "contact solve within small sliding)\n";
       else
         {
           out << "  sliding possible (no static equilibrium at some point of "
@@ -155,6 +156,28 @@ namespace FuzzyContact
                "edge of equilibrium may miss them (doc/contact.md, section "
                "1)\n";
       j["n_unsolved_near_limit"] = r.n_unsolved_near_limit;
+      if (r.n_beyond_small_sliding > 0)
+        out << "  " << r.n_beyond_small_sliding
+            << " evaluation(s) had contact forces within the friction "
+               "cones only after the bodies slid farther than node-to-"
+               "segment contact answers (a closed node beyond 'sliding "
+               "limit' master segments, at the point's friction or with "
+               "more: the bodies slide) and were counted as without "
+               "equilibrium\n";
+      j["n_beyond_small_sliding"] = r.n_beyond_small_sliding;
+      if (r.n_unsolved_below_sliding_limit > 0)
+        out << "  warning: " << r.n_unsolved_below_sliding_limit
+            << " evaluation(s) failed in the contact solver below the "
+               "friction that holds the bodies within small sliding (with "
+               "their friction times up to "
+            << number(r.unsolved_sliding_factor, 4)
+            << " the solves answer within it; with less they fail, as "
+               "they do where the cones hold the load only after gross "
+               "sliding) and were left out as if without equilibrium: the "
+               "bounds next to the edge of equilibrium may miss them "
+               "(doc/contact.md, section 1)\n";
+      j["n_unsolved_below_sliding_limit"] = r.n_unsolved_below_sliding_limit;
+      j["unsolved_sliding_factor"]        = r.unsolved_sliding_factor;
 
       j["sliding_possible"] = {{"possible", e.possible},
                                {"membership", e.membership},

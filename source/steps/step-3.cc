@@ -64,6 +64,7 @@ namespace Step3
     std::vector<std::optional<double>> friction_coefficients;
     unsigned int                       n_load_steps;
     double                             penetration_tolerance;
+    double                             sliding_limit;
     bool                               write_vtu;
     ModalParameters                    modal;
     double                             mode_error_tolerance;
@@ -119,6 +120,13 @@ namespace Step3
                         Patterns::Double(),
                         "Initial penetration accepted as round-off, "
                         "relative to the master face length.");
+      prm.declare_entry("sliding limit",
+                        "1",
+                        Patterns::Double(),
+                        "The largest slip of a closed slave node, in lengths "
+                        "of its master segment, that node-to-segment contact "
+                        "(small sliding) answers; an answer beyond it is "
+                        "refused (the bodies slide).");
       prm.declare_entry("write vtu",
                         "true",
                         Patterns::Bool(),
@@ -176,6 +184,8 @@ namespace Step3
       penetration_tolerance =
         Input::non_negative(prm.get_double("penetration tolerance"),
                             "penetration tolerance");
+      sliding_limit =
+        Input::positive(prm.get_double("sliding limit"), "sliding limit");
       write_vtu = prm.get_bool("write vtu");
       modal.parse_parameters(prm);
       prm.enter_subsection("Reduced models");
@@ -292,6 +302,7 @@ namespace Step3
                         parameters.mesh_refinements,
                         parameters.penetration_tolerance,
                         &scene_timer);
+    bodies.set_sliding_limit(parameters.sliding_limit);
     timer.leave_subsection();
     const Observations outputs(observed, bodies);
     const unsigned int n_shown = parameters.outputs.size();

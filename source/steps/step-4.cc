@@ -391,6 +391,12 @@ namespace Step4
       Utilities::MPI::sum(model->n_at_limit_of_equilibrium(), comm);
     results.n_unsolved_near_limit =
       Utilities::MPI::sum(model->n_unsolved_near_limit(), comm);
+    results.n_beyond_small_sliding =
+      Utilities::MPI::sum(model->n_beyond_small_sliding(), comm);
+    results.n_unsolved_below_sliding_limit =
+      Utilities::MPI::sum(model->n_unsolved_below_sliding_limit(), comm);
+    results.unsolved_sliding_factor =
+      Utilities::MPI::max(model->unsolved_sliding_factor(), comm);
     nlohmann::json json;
     FuzzyStudyReport::bounds(results, report, json);
     json["contact_solver"] = model->contact_solver();

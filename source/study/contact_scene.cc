@@ -62,6 +62,23 @@ namespace FuzzyContact
   }
 
 
+  void
+  ContactScene::set_sliding_limit(const double limit)
+  {
+    AssertThrow(limit > 0,
+                ExcMessage("sliding limit: must be positive (in lengths of "
+                           "the master segments)."));
+    sliding_limit_ = limit;
+  }
+
+
+  double
+  ContactScene::sliding_limit() const
+  {
+    return sliding_limit_;
+  }
+
+
   const Scene &
   ContactScene::scene() const
   {

@@ -128,7 +128,12 @@ namespace FuzzyContact
     current->set_contact_conditions(interface.initial_gaps(state.gap_offsets),
                                     interface.friction_coefficients(
                                       state.friction_coefficients));
-    return current->solve();
+    ContactSolution solution = current->solve();
+    check_small_sliding(interface,
+                        solution,
+                        bodies.sliding_limit(),
+                        "full-order contact solver");
+    return solution;
   }
 
 

@@ -11,6 +11,7 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <cmath>
 #include <sstream>
 #include <string>
 
@@ -31,7 +32,8 @@ namespace FuzzyContact
 
 
   bool
-  FuzzyContactModel::has_static_equilibrium(const std::vector<double> &values)
+  FuzzyContactModel::has_static_equilibrium(const std::vector<double> &values,
+                                            const bool within_small_sliding)
   {
     if (!can_lose_equilibrium())
       return true;
@@ -39,6 +41,27 @@ namespace FuzzyContact
     at_point(values, "the equilibrium check", [&]() {
       reduced_model->set_state(state(values));
       feasible = FuzzyContact::has_static_equilibrium(reduced_model->problem());
+      if (feasible && within_small_sliding)
+        try
+          {
+            // The contact solve (its state then starts the neighbours'),
+            // for the slip it leads to.
+            reduced_from_neighbour(values, [&]() {
+              return reduced_model->solve();
+            });
+          }
+        catch (const ExcBeyondSmallSliding &)
+          {
+            feasible = false;
+          }
+        catch (const ExceptionBase &)
+          {
+            // A solve that fails is the evaluations' to count or report,
+            // unless more friction slides beyond small sliding already.
+            if (!at_limit_of_equilibrium(near_limit_margin))
+              feasible = sliding_with_more_friction(values).kind ==
+                         SlidingEvidence::none;
+          }
       return std::vector<double>();
     });
     return feasible;
@@ -63,7 +86,10 @@ namespace FuzzyContact
       },
       LocalOptimisation::default_design_points(n_free),
       comm,
-      reduced_communicator());
+      reduced_communicator(),
+      [&](const std::vector<double> &p) {
+        return has_static_equilibrium(p, false);
+      });
   }
 
 
@@ -95,7 +121,8 @@ namespace FuzzyContact
 
 
   bool
-  FuzzyContactModel::failure_counts_as_without_equilibrium()
+  FuzzyContactModel::failure_counts_as_without_equilibrium(
+    const std::vector<double> &values)
   {
     if (!can_lose_equilibrium())
       return false;
@@ -106,8 +133,83 @@ namespace FuzzyContact
     else if (at_limit_of_equilibrium(near_limit_margin))
       ++n_unsolved;
     else
-      return false;
+      {
+        const SlidingEvidence evidence = sliding_with_more_friction(values);
+        if (evidence.kind == SlidingEvidence::beyond)
+          ++n_gross_sliding;
+        else if (evidence.kind == SlidingEvidence::within_with_more)
+          {
+            ++n_unsolved_sliding;
+            sliding_factor = std::max(sliding_factor, evidence.factor);
+          }
+        else
+          return false;
+      }
     return true;
+  }
+
+
+  FuzzyContactModel::SlidingEvidence
+  FuzzyContactModel::sliding_with_more_friction(
+    const std::vector<double> &values)
+  {
+    // Where the cones hold the load only after the bodies slid beyond
+    // small sliding (a pin that would spin in its bore), the active set
+    // iterations often cycle instead of converging to that answer, at
+    // some friction coefficients and not at others nearby. More friction
+    // holds the bodies better (less friction, more slip), so an answer
+    // with more friction that already slides beyond small sliding says
+    // that the point's own does too. The point is solved again with its
+    // friction coefficients times 1 + 2^-k, from k = sliding_probes - 1
+    // (just above the point) down to k = 0 (twice the friction), then 4
+    // and max_sliding_probe times, until an answer slides beyond small
+    // sliding: then the point does (beyond).
+    // If none does but some answer stays within it, the point's failure
+    // lies below the friction that holds the bodies within small sliding
+    // (within_with_more). If no probe answers, the failure is the
+    // solver's (none).
+    const SceneState at     = state(values);
+    const auto       answer = [&](const double factor) {
+      SceneState more = at;
+      for (double &mu : more.friction_coefficients)
+        mu *= factor;
+      reduced_model->set_state(more);
+      try
+        {
+          reduced_model->solve(*probe_solver);
+          return 1;
+        }
+      catch (const ExcBeyondSmallSliding &)
+        {
+          return -1;
+        }
+      catch (const ExceptionBase &)
+        {
+          return 0;
+        }
+    };
+    SlidingEvidence     evidence;
+    std::vector<double> factors;
+    for (int k = sliding_probes - 1; k >= 0; --k)
+      factors.push_back(1 + std::ldexp(1., -k));
+    factors.push_back(4);
+    factors.push_back(max_sliding_probe);
+    for (const double factor : factors)
+      {
+        const int a = answer(factor);
+        if (a < 0)
+          {
+            evidence.kind = SlidingEvidence::beyond;
+            break;
+          }
+        if (a > 0 && evidence.kind == SlidingEvidence::none)
+          {
+            evidence.kind   = SlidingEvidence::within_with_more;
+            evidence.factor = factor;
+          }
+      }
+    reduced_model->set_state(at);
+    return evidence;
   }
 
 
@@ -131,12 +233,21 @@ namespace FuzzyContact
                                      : reduced_model->solve();
           });
         }
+      catch (const ExcBeyondSmallSliding &)
+        {
+          // The bodies slide: no static equilibrium within small sliding
+          // (an error where every body is supported).
+          if (!can_lose_equilibrium())
+            throw;
+          ++n_gross_sliding;
+          return std::vector<double>();
+        }
       catch (const ExceptionBase &)
         {
           // At or near the limit of equilibrium a solver that fails
           // counts the point as without equilibrium
           // (n_unsolved_near_limit()).
-          if (!failure_counts_as_without_equilibrium())
+          if (!failure_counts_as_without_equilibrium(values))
             throw;
           return std::vector<double>();
         }
@@ -176,13 +287,21 @@ namespace FuzzyContact
           // forces in the friction cones that balance the load.
           return std::vector<double>();
         }
+      catch (const ExcBeyondSmallSliding &)
+        {
+          // (As in reduced().)
+          if (!can_lose_equilibrium())
+            throw;
+          ++n_gross_sliding;
+          return std::vector<double>();
+        }
       catch (const ExceptionBase &)
         {
           // (As in reduced(), where the reduced problem is at hand.)
           if (!can_lose_equilibrium() || reduced_ranks == MPI_COMM_NULL)
             throw;
           reduced_model->set_state(state(values));
-          if (!failure_counts_as_without_equilibrium())
+          if (!failure_counts_as_without_equilibrium(values))
             throw;
           return std::vector<double>();
         }
@@ -201,6 +320,27 @@ namespace FuzzyContact
   FuzzyContactModel::n_unsolved_near_limit() const
   {
     return n_unsolved;
+  }
+
+
+  unsigned long
+  FuzzyContactModel::n_beyond_small_sliding() const
+  {
+    return n_gross_sliding;
+  }
+
+
+  unsigned long
+  FuzzyContactModel::n_unsolved_below_sliding_limit() const
+  {
+    return n_unsolved_sliding;
+  }
+
+
+  double
+  FuzzyContactModel::unsolved_sliding_factor() const
+  {
+    return sliding_factor;
   }
 
 

@@ -75,6 +75,7 @@ namespace FuzzyContact
     s.time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
         .count();
+    check_small_sliding(bodies.interface(), s, bodies.sliding_limit(), name);
     return s;
   }
 

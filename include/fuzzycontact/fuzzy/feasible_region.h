@@ -23,10 +23,15 @@
 // solution in a box whose vertices all have one says that they do not
 // decide (then the levels' own findings count, and the report says so).
 //
-// The check is meant to be cheap (for contact, an NNLS problem on the
-// cones' edges, no contact solve): it runs on every rank that can evaluate
-// it, each the same points, and feasible_region_on_ranks() sends the
-// result to the others.
+// The check may come in two parts: a cheap necessary one (for contact, an
+// NNLS problem on the cones' edges, no contact solve) and the whole one
+// (for contact, also a solve that stays within small sliding,
+// contact/small_sliding.h). The vertices and the bisections use the whole
+// check; the design points the cheap one, unless the whole check refused
+// a vertex of the level that the cheap one accepted (then the whole one
+// too, so that the share with a solution is that of the whole check). It
+// runs on every rank that can evaluate it, each the same points, and
+// feasible_region_on_ranks() sends the result to the others.
 
 #ifndef fuzzycontact_fuzzy_feasible_region_h
 #define fuzzycontact_fuzzy_feasible_region_h
@@ -128,13 +133,15 @@ namespace FuzzyContact
   /**
    * The part of the boxes of the levels @p alpha of @p parameters where
    * @p feasible holds (see the top of this file), with @p design_points
-   * scrambled Sobol points per box.
+   * scrambled Sobol points per box; @p necessary (if given) is a cheap
+   * check that holds wherever @p feasible does.
    */
   FeasibleRegion
   feasible_region(const std::vector<FuzzyNumber> &parameters,
                   const std::vector<double>      &alpha,
                   const Feasibility              &feasible,
-                  const unsigned int              design_points);
+                  const unsigned int              design_points,
+                  const Feasibility              &necessary = {});
 
   /**
    * feasible_region() computed on the ranks of @p comm where @p solving is
@@ -147,7 +154,8 @@ namespace FuzzyContact
                            const Feasibility              &feasible,
                            const unsigned int              design_points,
                            const MPI_Comm                  comm,
-                           const MPI_Comm                  solving);
+                           const MPI_Comm                  solving,
+                           const Feasibility              &necessary = {});
 } // namespace FuzzyContact
 
 #endif

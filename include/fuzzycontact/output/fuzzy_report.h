@@ -87,6 +87,22 @@ namespace FuzzyContact
     unsigned long n_unsolved_near_limit = 0;
 
     /**
+     * Evaluations (over all ranks) whose answer slid beyond small sliding,
+     * counted as without equilibrium
+     * (FuzzyContactModel::n_beyond_small_sliding()).
+     */
+    unsigned long n_beyond_small_sliding = 0;
+
+    /**
+     * Evaluations (over all ranks) that failed below the friction that
+     * holds the bodies within small sliding, left out as without
+     * equilibrium, and the largest factor of their friction that answered
+     * (FuzzyContactModel::n_unsolved_below_sliding_limit()).
+     */
+    unsigned long n_unsolved_below_sliding_limit = 0;
+    double        unsolved_sliding_factor        = 1;
+
+    /**
      * What the model built in @p offline_time [s] is: its DoFs and outputs.
      */
     void

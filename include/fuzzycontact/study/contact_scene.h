@@ -13,6 +13,7 @@
 
 #include <fuzzycontact/base/sparse_cholesky.h>
 #include <fuzzycontact/contact/contact_interface.h>
+#include <fuzzycontact/contact/small_sliding.h>
 #include <fuzzycontact/fe/component.h>
 #include <fuzzycontact/scene/scene.h>
 #include <fuzzycontact/scene/scene_state.h>
@@ -56,6 +57,15 @@ namespace FuzzyContact
     components() const;
     const ContactInterface &
     interface() const;
+    /**
+     * The limit of small sliding (contact/small_sliding.h), in master
+     * segment lengths: the full-order and reduced models refuse an answer
+     * beyond it (ExcBeyondSmallSliding). Default default_sliding_limit.
+     */
+    void
+    set_sliding_limit(const double limit);
+    double
+    sliding_limit() const;
     /** DoFs of each component. */
     std::vector<unsigned int>
     n_dofs() const;
@@ -130,10 +140,11 @@ namespace FuzzyContact
     n_factorisations(const unsigned int c) const;
 
   private:
-    Scene                                                      scene_;
-    std::vector<std::unique_ptr<Component>>                    owned;
-    std::vector<const Component *>                             components_;
-    std::unique_ptr<ContactInterface>                          interface_;
+    Scene                                   scene_;
+    std::vector<std::unique_ptr<Component>> owned;
+    std::vector<const Component *>          components_;
+    std::unique_ptr<ContactInterface>       interface_;
+    double sliding_limit_ = default_sliding_limit;
     mutable std::vector<std::shared_ptr<const SparseCholesky>> factorisations;
     mutable std::vector<unsigned int>                          n_factorised;
   };

@@ -27,9 +27,13 @@
 // That is a result of the point, not an error: both reduced() and
 // full_order() then return no outputs (an empty vector, the interval
 // methods' mark of a point without a solution, interval_method.h), and
-// has_static_equilibrium() tells it cheaply (it depends on the loads, the
+// has_static_equilibrium() tells it (it depends on the loads, the
 // friction coefficients and the geometry only: an NNLS problem on the
-// friction cones' edges, contact_problem.h).
+// friction cones' edges, contact_problem.h). The same holds where the
+// cones balance the load but only after the bodies slid beyond what
+// node-to-segment contact answers (a pin that spins in its bore:
+// contact/small_sliding.h): the solve says so, and the point counts as
+// without equilibrium too.
 
 #ifndef fuzzycontact_study_fuzzy_contact_model_h
 #define fuzzycontact_study_fuzzy_contact_model_h
@@ -79,9 +83,16 @@ namespace FuzzyContact
      * the static correction alone is then exact.
      */
     bool modes_when_needed = true;
+    /**
+     * The limit of small sliding, in master segment lengths
+     * (contact/small_sliding.h): beyond it a point counts as without
+     * static equilibrium (the bodies slide).
+     */
+    double sliding_limit = default_sliding_limit;
 
     /**
-     * Declares "mesh refinements", "contact solver" and the subsections
+     * Declares "mesh refinements", "contact solver", "sliding limit" and
+     * the subsections
      * "Reduced models" (static correction, zone correction, modes), "Modal
      * analysis", "Reanalysis", "FL2C" and "Exact contact solver".
      */
@@ -201,12 +212,16 @@ namespace FuzzyContact
     /**
      * Whether the loads at @p values have a static equilibrium
      * (has_static_equilibrium() of contact/static_equilibrium.h on the reduced
-     * problem, whose free motions and load resultants are exact): no
-     * contact solve, a few microseconds to a millisecond. Only on the
-     * ranks of reduced_communicator().
+     * problem, whose free motions and load resultants are exact: a few
+     * microseconds to a millisecond) and, if @p within_small_sliding, the
+     * reduced model's answer there stays within small sliding
+     * (contact/small_sliding.h: one contact solve; a solve that fails
+     * otherwise is left to the evaluations). Only on the ranks of
+     * reduced_communicator().
      */
     bool
-    has_static_equilibrium(const std::vector<double> &values);
+    has_static_equilibrium(const std::vector<double> &values,
+                           const bool within_small_sliding = true);
 
     /**
      * Where in the box of every level of @p numbers (at the levels
@@ -251,6 +266,40 @@ namespace FuzzyContact
 
     /** The margin of "near the limit of equilibrium", relative to mu. */
     static constexpr double near_limit_margin = 0.05;
+
+    /**
+     * Evaluations (reduced() and full_order(), on this rank so far) whose
+     * answer slid beyond small sliding (contact/small_sliding.h: the key
+     * `sliding limit`): the bodies slide, and the point counts as without
+     * static equilibrium. Where every body is supported, such an answer is
+     * an error instead.
+     */
+    unsigned long
+    n_beyond_small_sliding() const;
+
+    /**
+     * Evaluations (on this rank so far) whose solve failed below the
+     * friction that holds the bodies within small sliding: the reduced
+     * model answers within small sliding with more friction (up to
+     * max_sliding_probe times the point's, unsolved_sliding_factor()),
+     * fails with less, and no
+     * answer with more friction slid beyond it. Away from the limit of
+     * equilibrium, where the cones hold the load only after gross
+     * sliding, the active set iterations cycle (a pin in its bore whose
+     * friction cannot hold the torque of its load). They are left out as
+     * if without equilibrium, with a warning.
+     */
+    unsigned long
+    n_unsolved_below_sliding_limit() const;
+
+    /** The largest such factor (1 if none). */
+    double
+    unsolved_sliding_factor() const;
+
+    /** The friction factors 1 + 2^-k (k = 0, ..., sliding_probes - 1), 4
+     * and max_sliding_probe a failed point is solved again with. */
+    static constexpr int    sliding_probes    = 11;
+    static constexpr double max_sliding_probe = 8;
 
     /** See FullOrderModel; default false. */
     void
@@ -375,11 +424,29 @@ namespace FuzzyContact
     bool
     at_limit_of_equilibrium(const double margin = limit_margin);
 
-    // A solve at the current state failed: whether the point counts as
-    // without equilibrium (at or near its limit, counted), or the failure
-    // is an error.
+    // A solve at @p values (the reduced model's current state) failed:
+    // whether the point counts as without equilibrium (at or near its
+    // limit, or beyond small sliding; counted), or the failure is an error.
     bool
-    failure_counts_as_without_equilibrium();
+    failure_counts_as_without_equilibrium(const std::vector<double> &values);
+
+    // What the reduced model answers at @p values with more friction, for
+    // a point whose solve failed (see failure_counts_as_without_equilibrium
+    // in the source).
+    struct SlidingEvidence
+    {
+      enum Kind
+      {
+        none,
+        beyond,
+        within_with_more
+      } kind = none;
+      /** within_with_more: the least factor of the friction that answered
+       * within small sliding. */
+      double factor = 1;
+    };
+    SlidingEvidence
+    sliding_with_more_friction(const std::vector<double> &values);
 
     // The reduced model's answer with @p solver, or with the model's own
     // solver if null.
@@ -411,17 +478,23 @@ namespace FuzzyContact
     std::unique_ptr<ReducedOrderModel> reduced_model;
     std::unique_ptr<FullOrderModel>    full_model;
     // The reduced model's contact states at the points evaluated so far.
-    WarmStarts                warm_starts;
-    std::string               solver_name;
-    std::string               skipped_stages;
-    std::vector<std::string>  inert_parameters;
-    std::string               held_by_contact;
-    unsigned long             n_limit_points = 0, n_unsolved = 0;
-    MPI_Comm                  comm;
-    MPI_Comm                  reduced_ranks     = MPI_COMM_NULL;
-    bool                      own_reduced_ranks = false;
-    std::vector<unsigned int> builder; // the rank of each component
-    unsigned int              n_ranks_building = 1;
+    WarmStarts               warm_starts;
+    std::string              solver_name;
+    std::string              skipped_stages;
+    std::vector<std::string> inert_parameters;
+    std::string              held_by_contact;
+    unsigned long n_limit_points = 0, n_unsolved = 0, n_gross_sliding = 0,
+                  n_unsolved_sliding = 0;
+    double sliding_factor            = 1;
+    // The exact reduced solver of sliding_with_more_friction(): the
+    // study's settings with fewer iterations and path solves (a probe
+    // that does not converge quickly says nothing).
+    std::unique_ptr<ContactSolver> probe_solver;
+    MPI_Comm                       comm;
+    MPI_Comm                       reduced_ranks     = MPI_COMM_NULL;
+    bool                           own_reduced_ranks = false;
+    std::vector<unsigned int>      builder; // the rank of each component
+    unsigned int                   n_ranks_building = 1;
   };
 } // namespace FuzzyContact
 
