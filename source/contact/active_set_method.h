@@ -218,12 +218,19 @@ namespace FuzzyContact
       if (cache[k] == 0)
         {
           const double d = W.diagonal(row);
-          AssertThrow(d > 0 && std::isfinite(d),
-                      ExcMessage(what +
-                                 ": the contact flexibility of slave "
-                                 "node " +
-                                 std::to_string(k) +
-                                 " is not positive; the node cannot move."));
+          AssertThrow(
+            d > 0 && std::isfinite(d),
+            ExcMessage(
+              what + ": the " + (row % 2 == 0 ? "normal" : "tangential") +
+              " contact flexibility of slave node " + std::to_string(k) +
+              " is not positive; the node cannot move" +
+              (row % 2 == 0 ? "."
+                            : " along the face: its tangential motion is "
+                              "held on both bodies (symmetry supports on "
+                              "both sides of the contact, say). With "
+                              "friction such a node is not supported yet: "
+                              "hold one body only on that line, or make "
+                              "the pair frictionless.")));
           cache[k] = 1. / d;
         }
       return cache[k];
