@@ -878,6 +878,44 @@ TEST(FloatingBodies, AFailureNearTheLimitOfSlidingLeavesThePointOut)
   EXPECT_EQ(strict.n_unsolved_near_limit(), 0u);
 }
 
+// The contact patch test (prm/patch-test.prm: two steel blocks, non-matching
+// meshes, a symmetry line x = 0 held on both blocks, the top pressed 1e-5
+// m) with friction mu = 0.3. The slave node on the symmetry line cannot
+// move tangentially on either body (W_tt = 0 there): its tangential force
+// is a support reaction, and the solvers stopped at it before. Exact
+// answer: the uniform uniaxial stress of the frictionless test (equal
+// materials, no relative lateral expansion), sigma_yy = E' eps with eps =
+// 1e-5 / 0.1 and E' = E / (1 - nu^2) (plane strain, free lateral faces),
+// F_n = sigma_yy 0.1 m; the friction changes it only by the non-matching
+// meshes' error.
+TEST(FloatingBodies, FrictionOnASymmetryLineHeldOnBothBodies)
+{
+  std::ifstream      in(source_dir + "/prm/patch-test.prm");
+  std::ostringstream text;
+  text << in.rdbuf();
+  const Scene s = Scene::read_from_string(
+    replace(text.str(),
+            "set friction coefficient = 0",
+            "set friction coefficient = 0.3"));
+  ContactScene bodies(s, 1);
+  unsigned int held = 0;
+  for (unsigned int k = 0; k < bodies.interface().n_nodes(); ++k)
+    if (bodies.interface().friction_coefficients()[k] == 0)
+      {
+        ++held;
+        EXPECT_NEAR(bodies.interface().node(k).slave.position[0], 0., 1e-12);
+      }
+  EXPECT_EQ(held, 1u);
+  const double F_n = 210e9 / (1 - 0.3 * 0.3) * 1e-5 / 0.1 * 0.1;
+  const auto   v   = three_ways(s, {"Fn", "Ft"});
+  for (const auto &w : v)
+    {
+      EXPECT_NEAR(w[0], F_n, 1e-3 * F_n);
+      EXPECT_LT(std::abs(w[1]), 1e-3 * F_n);
+      EXPECT_NEAR(w[0], v[0][0], 1e-9 * F_n);
+    }
+}
+
 // A pin in the bore of a lug (prm/pin.prm), held by contact alone, under a
 // load whose line of action misses the bore's centre: the friction in the
 // bore holds its torque. Statics: the normal forces pass through the bore's

@@ -217,20 +217,23 @@ namespace FuzzyContact
     {
       if (cache[k] == 0)
         {
-          const double d = W.diagonal(row);
+          // (A node held tangentially on both bodies has W_tt = 0 and no
+          // friction: its dg_t vanishes, and any scaling of it will do.)
+          const double d = row % 2 == 1 && W.diagonal(row) == 0 && mu[k] == 0
+                             ? W.diagonal(row - 1)
+                             : W.diagonal(row);
           AssertThrow(
             d > 0 && std::isfinite(d),
             ExcMessage(
               what + ": the " + (row % 2 == 0 ? "normal" : "tangential") +
               " contact flexibility of slave node " + std::to_string(k) +
               " is not positive; the node cannot move" +
-              (row % 2 == 0 ? "."
-                            : " along the face: its tangential motion is "
-                              "held on both bodies (symmetry supports on "
-                              "both sides of the contact, say). With "
-                              "friction such a node is not supported yet: "
-                              "hold one body only on that line, or make "
-                              "the pair frictionless.")));
+              (row % 2 == 0
+                 ? "."
+                 : " along the face, and it has friction: a node whose "
+                   "tangential motion is held on both bodies (the "
+                   "contact interface gives such a node none) cannot "
+                   "carry friction.")));
           cache[k] = 1. / d;
         }
       return cache[k];

@@ -381,9 +381,14 @@ namespace FuzzyContact
                                            contact_dofs_[c].end()),
                                contact_dofs_[c].end());
       }
+    tangentially_held_.assign(nodes_.size(), true);
     for (const Entry &e : entries)
       if (e.value != 0 && !constrained_[e.component][e.dof])
-        operators_[e.component].add(e.row, e.dof, e.value);
+        {
+          operators_[e.component].add(e.row, e.dof, e.value);
+          if (e.row % 2 == 1)
+            tangentially_held_[e.row / 2] = false;
+        }
   }
 
 
@@ -497,8 +502,8 @@ namespace FuzzyContact
   ContactInterface::friction_coefficients() const
   {
     std::vector<double> mu;
-    for (const ContactNode &node : nodes_)
-      mu.push_back(node.friction_coefficient);
+    for (unsigned int k = 0; k < nodes_.size(); ++k)
+      mu.push_back(tangentially_held_[k] ? 0. : nodes_[k].friction_coefficient);
     return mu;
   }
 
@@ -514,8 +519,8 @@ namespace FuzzyContact
                           "Contact " + pair_names_[p] +
                             ": friction coefficient");
     std::vector<double> mu;
-    for (const ContactNode &node : nodes_)
-      mu.push_back(per_pair[node.pair]);
+    for (unsigned int k = 0; k < nodes_.size(); ++k)
+      mu.push_back(tangentially_held_[k] ? 0. : per_pair[nodes_[k].pair]);
     return mu;
   }
 

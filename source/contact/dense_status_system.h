@@ -139,8 +139,12 @@ namespace FuzzyContact
     void
     slip_row(const unsigned int r, std::vector<double> &A) const
     {
-      const unsigned int k          = closed[r / 2];
-      const double       d          = W.diagonal(tangential_row(k));
+      const unsigned int k = closed[r / 2];
+      // (W_tt = 0 at a node held tangentially on both bodies, which has
+      // no friction: its row is then p_t = 0, scaled by W_nn.)
+      const double d                = W.diagonal(tangential_row(k)) != 0
+                                        ? W.diagonal(tangential_row(k))
+                                        : W.diagonal(normal_row(k));
       A[std::size_t(r) * N + r]     = d;
       A[std::size_t(r - 1) * N + r] = -d * mu[k] * sign[k];
     }

@@ -170,13 +170,19 @@ namespace FuzzyContact
     Vector<double>
     initial_gaps(const std::vector<double> &gap_offsets) const;
 
-    /** Friction coefficient of every node, from its pair in the scene. */
+    /**
+     * Friction coefficient of every node, from its pair in the scene; 0 at
+     * a node whose tangential motion is held on both bodies (its
+     * tangential row of C vanishes: a symmetry line through the contact
+     * held on both sides), where the tangential force is a support
+     * reaction, not friction.
+     */
     std::vector<double>
     friction_coefficients() const;
 
     /**
      * Friction coefficient of every node when pair p has @p per_pair[p]
-     * (each >= 0).
+     * (each >= 0; 0 at a node held tangentially, as above).
      */
     std::vector<double>
     friction_coefficients(const std::vector<double> &per_pair) const;
@@ -225,6 +231,8 @@ namespace FuzzyContact
     std::vector<SparseMatrix<double>>                 operators_;
     std::vector<std::vector<types::global_dof_index>> contact_dofs_;
     std::vector<std::vector<bool>>                    constrained_;
+    // Per node: its tangential row of C vanishes (friction_coefficients()).
+    std::vector<bool> tangentially_held_;
     // Per pair: master segments, the centre of the slave face along tau,
     // the penetration tolerance, the name.
     std::vector<std::vector<MasterSegment>> segments_;
