@@ -893,10 +893,10 @@ TEST(FloatingBodies, FrictionOnASymmetryLineHeldOnBothBodies)
   std::ifstream      in(source_dir + "/prm/patch-test.prm");
   std::ostringstream text;
   text << in.rdbuf();
-  const Scene s = Scene::read_from_string(
-    replace(text.str(),
-            "set friction coefficient = 0",
-            "set friction coefficient = 0.3"));
+  const Scene s =
+    Scene::read_from_string(replace(text.str(),
+                                    "set friction coefficient = 0",
+                                    "set friction coefficient = 0.3"));
   ContactScene bodies(s, 1);
   unsigned int held = 0;
   for (unsigned int k = 0; k < bodies.interface().n_nodes(); ++k)
