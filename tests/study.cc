@@ -497,19 +497,26 @@ namespace
             outputs.values(reduced.solve(FL2CSolver(fl2c)))};
   }
 
+  // The scene prm/@p name.prm with @p from replaced by @p to.
+  Scene
+  edited_scene(const std::string &name,
+               const std::string &from,
+               const std::string &to)
+  {
+    const std::string  file = source_dir + "/prm/" + name + ".prm";
+    std::ifstream      in(file);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return Scene::read_from_string(replace(text.str(), from, to), file);
+  }
+
   // @p text with the block's friction coefficient set to @p mu.
   Scene
   slope_with_friction(const double mu)
   {
-    std::ifstream      in(source_dir + "/prm/slope.prm");
-    std::ostringstream text;
-    text << in.rdbuf();
-    Scene s = Scene::read_from_string(replace(text.str(),
-                                              "set friction coefficient = 0.5",
-                                              "set friction coefficient = " +
-                                                std::to_string(mu)),
-                                      source_dir + "/prm/slope.prm");
-    return s;
+    return edited_scene("slope",
+                        "set friction coefficient = 0.5",
+                        "set friction coefficient = " + std::to_string(mu));
   }
 
   // A refusal for want of static equilibrium whose message gives the
@@ -679,14 +686,9 @@ TEST(FloatingBodies, PatchTestUnderAPressure)
 // far below mu P (the meshes are not symmetric: 4.5e-7 P).
 TEST(FloatingBodies, RollerWithLittleFriction)
 {
-  std::ifstream      in(source_dir + "/prm/hertz-load.prm");
-  std::ostringstream text;
-  text << in.rdbuf();
-  const Scene s =
-    Scene::read_from_string(replace(text.str(),
-                                    "set friction coefficient = 0\n",
-                                    "set friction coefficient = 0.03\n"),
-                            source_dir + "/prm/hertz-load.prm");
+  const Scene  s = edited_scene("hertz-load",
+                               "set friction coefficient = 0\n",
+                               "set friction coefficient = 0.03\n");
   const double P = s.components[0].loads[0].total_force;
   const auto   v = three_ways(s, {"Fn", "Ft"});
   for (const auto &w : v)
@@ -890,13 +892,9 @@ TEST(FloatingBodies, AFailureNearTheLimitOfSlidingLeavesThePointOut)
 // meshes' error.
 TEST(FloatingBodies, FrictionOnASymmetryLineHeldOnBothBodies)
 {
-  std::ifstream      in(source_dir + "/prm/patch-test.prm");
-  std::ostringstream text;
-  text << in.rdbuf();
-  const Scene s =
-    Scene::read_from_string(replace(text.str(),
-                                    "set friction coefficient = 0",
-                                    "set friction coefficient = 0.3"));
+  const Scene  s = edited_scene("patch-test",
+                               "set friction coefficient = 0",
+                               "set friction coefficient = 0.3");
   ContactScene bodies(s, 1);
   unsigned int held = 0;
   for (unsigned int k = 0; k < bodies.interface().n_nodes(); ++k)

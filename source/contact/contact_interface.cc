@@ -296,6 +296,11 @@ namespace FuzzyContact
         if (!can_move)
           continue;
 
+        node.segment_length = 0;
+        for (const FaceNode &a : node.master_nodes)
+          for (const FaceNode &b : node.master_nodes)
+            node.segment_length =
+              std::max(node.segment_length, a.position.distance(b.position));
         nodes_.push_back(node);
         ++n_added;
       }

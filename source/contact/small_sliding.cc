@@ -8,22 +8,6 @@
 
 namespace FuzzyContact
 {
-  namespace
-  {
-    // The distance between the farthest two nodes of the master segment
-    // (its end nodes, in whatever order the face lists them).
-    double
-    segment_length(const ContactNode &node)
-    {
-      double length = 0;
-      for (const FaceNode &a : node.master_nodes)
-        for (const FaceNode &b : node.master_nodes)
-          length = std::max(length, a.position.distance(b.position));
-      return length;
-    }
-  } // namespace
-
-
   SlidingExtent
   largest_sliding(const ContactInterface &interface,
                   const ContactSolution  &solution)
@@ -35,7 +19,7 @@ namespace FuzzyContact
       {
         if (solution.status[k] == ContactStatus::open)
           continue;
-        const double length = segment_length(interface.node(k));
+        const double length = interface.node(k).segment_length;
         const double slip   = std::abs(solution.g[2 * k + 1]);
         Assert(length > 0, ExcInternalError());
         const double ratio = slip / length;

@@ -63,8 +63,7 @@ namespace Step3
     // Each case's coefficient for every pair; none: the scene's own.
     std::vector<std::optional<double>> friction_coefficients;
     unsigned int                       n_load_steps;
-    double                             penetration_tolerance;
-    double                             sliding_limit;
+    ContactFormulation                 contact;
     bool                               write_vtu;
     ModalParameters                    modal;
     double                             mode_error_tolerance;
@@ -115,18 +114,7 @@ namespace Step3
                         Patterns::Integer(),
                         "Proportional load steps (a scene with load stages "
                         "uses its stages' own).");
-      prm.declare_entry("penetration tolerance",
-                        "1e-8",
-                        Patterns::Double(),
-                        "Initial penetration accepted as round-off, "
-                        "relative to the master face length.");
-      prm.declare_entry("sliding limit",
-                        "1",
-                        Patterns::Double(),
-                        "The largest slip of a closed slave node, in lengths "
-                        "of its master segment, that node-to-segment contact "
-                        "(small sliding) answers; an answer beyond it is "
-                        "refused (the bodies slide).");
+      ContactFormulation::declare_parameters(prm);
       prm.declare_entry("write vtu",
                         "true",
                         Patterns::Bool(),
@@ -181,11 +169,7 @@ namespace Step3
                                              1,
                                              1000,
                                              "load steps");
-      penetration_tolerance =
-        Input::non_negative(prm.get_double("penetration tolerance"),
-                            "penetration tolerance");
-      sliding_limit =
-        Input::positive(prm.get_double("sliding limit"), "sliding limit");
+      contact.parse_parameters(prm);
       write_vtu = prm.get_bool("write vtu");
       modal.parse_parameters(prm);
       prm.enter_subsection("Reduced models");
@@ -300,9 +284,9 @@ namespace Step3
     timer.enter_subsection("assembly");
     ContactScene bodies(scene,
                         parameters.mesh_refinements,
-                        parameters.penetration_tolerance,
+                        parameters.contact.penetration_tolerance,
                         &scene_timer);
-    bodies.set_sliding_limit(parameters.sliding_limit);
+    bodies.set_sliding_limit(parameters.contact.sliding_limit);
     timer.leave_subsection();
     const Observations outputs(observed, bodies);
     const unsigned int n_shown = parameters.outputs.size();

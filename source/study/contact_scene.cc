@@ -1,3 +1,4 @@
+#include <fuzzycontact/base/input.h>
 #include <fuzzycontact/base/progress.h>
 #include <fuzzycontact/base/timer_section.h>
 #include <fuzzycontact/study/contact_scene.h>
@@ -11,6 +12,50 @@
 
 namespace FuzzyContact
 {
+  void
+  ContactFormulation::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("penetration tolerance",
+                      "1e-8",
+                      Patterns::Double(),
+                      "Initial penetration accepted as round-off, "
+                      "relative to the master face length.");
+    declare_sliding_limit(prm);
+  }
+
+
+  void
+  ContactFormulation::parse_parameters(ParameterHandler &prm)
+  {
+    penetration_tolerance =
+      Input::non_negative(prm.get_double("penetration tolerance"),
+                          "penetration tolerance");
+    sliding_limit = parse_sliding_limit(prm);
+  }
+
+
+  void
+  ContactFormulation::declare_sliding_limit(ParameterHandler &prm)
+  {
+    prm.declare_entry("sliding limit",
+                      "1",
+                      Patterns::Double(),
+                      "The largest slip of a closed slave node, in lengths "
+                      "of its master segment, that node-to-segment contact "
+                      "(small sliding) answers; an answer beyond it is "
+                      "refused (step-3), or its point counts as without "
+                      "static equilibrium (step-4; an error if every body "
+                      "is supported).");
+  }
+
+
+  double
+  ContactFormulation::parse_sliding_limit(ParameterHandler &prm)
+  {
+    return Input::positive(prm.get_double("sliding limit"), "sliding limit");
+  }
+
+
   ContactScene::ContactScene(const Scene             &scene,
                              const unsigned int       mesh_refinements,
                              const double             penetration_tolerance,

@@ -32,14 +32,7 @@ namespace FuzzyContact
                       "of subsection FL2C) or reduced exact (the primal-dual "
                       "active set method of subsection Exact contact "
                       "solver).");
-    prm.declare_entry("sliding limit",
-                      "1",
-                      Patterns::Double(),
-                      "The largest slip of a closed slave node, in lengths "
-                      "of its master segment, that node-to-segment contact "
-                      "(small sliding) answers: a point whose answer slides "
-                      "farther counts as without static equilibrium (the "
-                      "bodies slide; an error if every body is supported).");
+    ContactFormulation::declare_sliding_limit(prm);
     prm.enter_subsection("Reduced models");
     prm.declare_entry("static correction",
                       "true",
@@ -97,8 +90,7 @@ namespace FuzzyContact
   {
     mesh_refinements = prm.get_integer("mesh refinements");
     contact_solver   = prm.get("contact solver");
-    sliding_limit =
-      Input::positive(prm.get_double("sliding limit"), "sliding limit");
+    sliding_limit    = ContactFormulation::parse_sliding_limit(prm);
     prm.enter_subsection("Reduced models");
     reduced.static_correction         = prm.get_bool("static correction");
     const std::string zone_correction = prm.get("zone correction");

@@ -85,6 +85,9 @@ namespace FuzzyContact
     double initial_gap;
     /** Coulomb coefficient of the pair, as read from the scene. */
     double friction_coefficient;
+    /** Length of the master segment (the distance between its end
+     * nodes). */
+    double segment_length;
     /** Slave-face length this node stands for (integral of its shape
      * function along the slave face): pressure = p_n / (length * t). */
     double tributary_length;

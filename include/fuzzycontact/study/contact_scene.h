@@ -18,6 +18,7 @@
 #include <fuzzycontact/scene/scene.h>
 #include <fuzzycontact/scene/scene_state.h>
 
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 
 #include <memory>
@@ -25,6 +26,29 @@
 
 namespace FuzzyContact
 {
+  /**
+   * The keys of the contact formulation a step file sets: "penetration
+   * tolerance" (initial penetration accepted as round-off, relative to the
+   * master face length) and "sliding limit" (contact/small_sliding.h).
+   */
+  struct ContactFormulation
+  {
+    double penetration_tolerance = 1e-8;
+    double sliding_limit         = default_sliding_limit;
+
+    /** Declares both keys (step-3). */
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+    /** "sliding limit" alone (step-4, whose penetration tolerance is
+     * fixed). */
+    static void
+    declare_sliding_limit(ParameterHandler &prm);
+    static double
+    parse_sliding_limit(ParameterHandler &prm);
+  };
+
   class ContactScene
   {
   public:
