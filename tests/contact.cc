@@ -434,6 +434,68 @@ TEST(ContactInterface, OverlapSceneHasTheExpectedCandidates)
   EXPECT_EQ(stacked.interface->n_nodes(), 150u);
 }
 
+// Small sliding's measure (contact/slide_profile.h) against the geometry.
+// The pin's bore (prm/pin.prm): the master face is the lower half of a
+// circle of radius R = 10.05 mm about (40, 30) mm, in faces about 0.5 mm
+// long, tau running counter-clockwise. A slide s turns the normal by about
+// s / R, and the face ends at the half circle's ends (with a tenth of
+// the last face). The patch test (prm/patch-test.prm): the master face is
+// flat, 0.1 m long in faces of 0.02 m; a slide never turns it, however
+// many faces it crosses, until it leaves the face.
+TEST(ContactInterface, SlideProfileTurnsWithTheMasterFace)
+{
+  const Bodies   pin(Scene::read(source_dir + "/prm/pin.prm"));
+  const double   R = 10.05e-3;
+  const Point<2> centre(0.04, 0.03);
+  double         largest_error = 0;
+  unsigned int   n_off         = 0;
+  for (const ContactNode &node : pin.interface->nodes())
+    {
+      const Tensor<1, 2> r   = node.projection - centre;
+      const double       phi = std::atan2(r[1], r[0]); // in [-pi, 0]
+      // The arc to the face's end against and along tau.
+      const double to_end[2] = {R * (phi + M_PI), -R * phi};
+      for (const double s : {1e-4, 1e-3, 5e-3, 1.2e-2})
+        for (unsigned int d = 0; d < 2; ++d)
+          {
+            const double turn = node.slide.turn_at(d == 1 ? s : -s);
+            if (s < to_end[d] - 1e-9)
+              largest_error = std::max(largest_error, std::abs(turn - s / R));
+            else if (s > to_end[d] + 1e-4)
+              {
+                EXPECT_EQ(turn, INFINITY) << s << " " << to_end[d];
+                ++n_off;
+              }
+          }
+    }
+  // The faces draw the circle as a polygon (their nodes lie on their
+  // chords): the normal turns in steps of a face's angle h / R, and the
+  // turn is off by at most one step.
+  double h = 0;
+  for (const MasterSegment &face : pin.interface->master_segments(0))
+    h = std::max(h,
+                 face.nodes.front().position.distance(
+                   face.nodes.back().position));
+  EXPECT_LT(largest_error, h / R);
+  EXPECT_GT(largest_error, 0.);
+  EXPECT_GT(n_off, 10u);
+
+  const Bodies patch(Scene::read(source_dir + "/prm/patch-test.prm"));
+  for (const ContactNode &node : patch.interface->nodes())
+    {
+      const double x         = node.projection[0];
+      const double to_end[2] = {x, 0.1 - x};
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          const double sign = (d == 1 ? 1. : -1.);
+          EXPECT_EQ(node.slide.turn_at(sign * 0.999 * to_end[d]), 0.);
+          // A tenth of the last face's 0.02 m may overhang.
+          EXPECT_EQ(node.slide.turn_at(sign * (to_end[d] + 0.0019)), 0.);
+          EXPECT_EQ(node.slide.turn_at(sign * (to_end[d] + 0.0021)), INFINITY);
+        }
+    }
+}
+
 TEST(ContactInterface, ContactForcesSumToZeroOverBothBodies)
 {
   for (const std::string &text :

@@ -51,6 +51,7 @@ set(step3_bad_inputs
   "faces_apart|scene|set lower left corner  = 0.1, -0.008|set lower left corner  = 0.25, -0.008|Contact interface: no node of the slave face \\(P1 bottom\\) lies opposite the master face \\(P2 top\\)"
   "negative_friction_in_step|step|set friction coefficients   = 0, 0.3|set friction coefficients = 0, -0.3|friction coefficients: each value must not be negative, got -0.3"
   "negative_friction_in_scene|scene|set friction coefficient = 0.3|set friction coefficient = -0.3|Contact interface: friction coefficient must not be negative"
+  "sliding_angle_limit_out_of_range|step|set penetration tolerance   = 1e-8|set sliding angle limit = 90|sliding angle limit must lie between 0 and 90 degrees, got 90"
   "initial_penetration|scene|set initial gap          = auto|set initial gap = -1e-3|Contact interface: initial penetration of 0.001 m at the slave node"
   "transition_points_out_of_order|step|set gap points      = 1e-3, 5e-3, 1e-2|set gap points = 5e-3, 1e-3, 1e-2|FL2C: gap points / force points: the input transition points must satisfy 0 < p1 < p2 < p3, got 0.005, 0.001, 0.01"
   "malformed_friction_list|step|set friction coefficients   = 0, 0.3|set friction coefficients = 0, x|friction coefficients: <x> is not a number"

@@ -220,6 +220,7 @@ namespace FuzzyContact
     // segments and measures positions along the face for the reports.
     const Tensor<1, 2>          tau   = orient_along_pair(master_faces);
     const std::vector<unsigned> order = order_along(master_faces, tau);
+    const SlideProfiles         profiles(master_faces);
 
     const std::map<types::global_dof_index, SlaveNode> slave_nodes =
       slave_nodes_of(slave_faces, slave.fe().degree);
@@ -296,11 +297,10 @@ namespace FuzzyContact
         if (!can_move)
           continue;
 
-        node.segment_length = 0;
-        for (const FaceNode &a : node.master_nodes)
-          for (const FaceNode &b : node.master_nodes)
-            node.segment_length =
-              std::max(node.segment_length, a.position.distance(b.position));
+        node.slide = profiles(best - master_faces.data(),
+                              best_t,
+                              node.normal,
+                              node.tangent);
         nodes_.push_back(node);
         ++n_added;
       }

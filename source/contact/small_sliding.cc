@@ -19,13 +19,13 @@ namespace FuzzyContact
       {
         if (solution.status[k] == ContactStatus::open)
           continue;
-        const double length = interface.node(k).segment_length;
-        const double slip   = std::abs(solution.g[2 * k + 1]);
-        Assert(length > 0, ExcInternalError());
-        const double ratio = slip / length;
+        const double slip = solution.g[2 * k + 1];
         // (A NaN slip counts as beyond any limit.)
-        if (!(ratio <= largest.ratio))
-          largest = {std::isnan(ratio) ? INFINITY : ratio, k, slip, length};
+        const double angle =
+          std::isnan(slip) ? INFINITY
+                           : interface.node(k).slide.turn_at(slip) * 180 / M_PI;
+        if (!(angle <= largest.angle))
+          largest = {angle, k, slip};
       }
     return largest;
   }
@@ -38,7 +38,7 @@ namespace FuzzyContact
                       const std::string      &what)
   {
     const SlidingExtent largest = largest_sliding(interface, solution);
-    if (largest.ratio <= limit)
+    if (largest.angle <= limit)
       return;
     const ContactNode &node = interface.node(largest.node);
     std::ostringstream message;
@@ -46,13 +46,27 @@ namespace FuzzyContact
     message << what << ": the answer is beyond small sliding: slave node ("
             << node.slave.position[0] << ", " << node.slave.position[1]
             << ") of contact pair '" << interface.pair_name(node.pair)
-            << "' slides " << largest.slip << " m along the master face, "
-            << largest.ratio << " times the length of its master segment ("
-            << largest.length << " m; the key 'sliding limit' allows " << limit
-            << "). Node-to-segment contact keeps each node's segment, normal "
-               "and tangent of the unloaded bodies, so this is not the "
-               "bodies' answer: they slide (gross sliding), the friction "
-               "cannot hold them in small displacements.";
+            << "' slides " << std::abs(largest.slip)
+            << " m along the master face";
+    if (std::isinf(largest.angle))
+      message << ", off its end (the master face ends "
+              << node.slide.face_end[largest.slip >= 0 ? 1 : 0]
+              << " m from the node's projection, with a tenth of its last "
+                 "segment)";
+    else
+      message << ", where the master face's normal has turned by "
+              << largest.angle << " degrees (the key 'sliding angle limit' "
+              << "allows " << limit << ")";
+    message << ". Node-to-segment contact keeps each node's projection, "
+               "normal and tangent of the unloaded bodies, so this is not "
+               "the bodies' answer: ";
+    if (std::isinf(largest.angle))
+      message << "either they slide (gross sliding: the friction cannot hold "
+                 "them), or the slave face overhangs the master face's end "
+                 "(make the longer face the master).";
+    else
+      message << "they slide (gross sliding), the friction cannot hold them "
+                 "in small displacements.";
     AssertThrow(false, ExcBeyondSmallSliding(message.str()));
   }
 } // namespace FuzzyContact

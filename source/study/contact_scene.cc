@@ -37,22 +37,29 @@ namespace FuzzyContact
   void
   ContactFormulation::declare_sliding_limit(ParameterHandler &prm)
   {
-    prm.declare_entry("sliding limit",
-                      "1",
+    prm.declare_entry("sliding angle limit",
+                      "5",
                       Patterns::Double(),
-                      "The largest slip of a closed slave node, in lengths "
-                      "of its master segment, that node-to-segment contact "
-                      "(small sliding) answers; an answer beyond it is "
-                      "refused (step-3), or its point counts as without "
-                      "static equilibrium (step-4; an error if every body "
-                      "is supported).");
+                      "Small sliding's limit [degrees]: the largest turn of "
+                      "the master face's normal along a closed slave node's "
+                      "slide (a slide along a flat face is within it at any "
+                      "length; sliding off the master face never is). "
+                      "Node-to-segment contact keeps the unloaded geometry: "
+                      "an answer beyond the limit is refused (step-3), or "
+                      "its point counts as without static equilibrium "
+                      "(step-4; an error if every body is supported).");
   }
 
 
   double
   ContactFormulation::parse_sliding_limit(ParameterHandler &prm)
   {
-    return Input::positive(prm.get_double("sliding limit"), "sliding limit");
+    const double limit = prm.get_double("sliding angle limit");
+    AssertThrow(limit > 0 && limit < 90,
+                ExcMessage("sliding angle limit must lie between 0 and 90 "
+                           "degrees, got " +
+                           Utilities::to_string(limit) + "."));
+    return limit;
   }
 
 
@@ -110,9 +117,9 @@ namespace FuzzyContact
   void
   ContactScene::set_sliding_limit(const double limit)
   {
-    AssertThrow(limit > 0,
-                ExcMessage("sliding limit: must be positive (in lengths of "
-                           "the master segments)."));
+    AssertThrow(limit > 0 && limit < 90,
+                ExcMessage("sliding angle limit: must lie between 0 and 90 "
+                           "degrees."));
     sliding_limit_ = limit;
   }
 

@@ -37,6 +37,7 @@
 #ifndef fuzzycontact_contact_contact_interface_h
 #define fuzzycontact_contact_contact_interface_h
 
+#include <fuzzycontact/contact/slide_profile.h>
 #include <fuzzycontact/fe/component.h>
 #include <fuzzycontact/scene/scene.h>
 
@@ -85,9 +86,11 @@ namespace FuzzyContact
     double initial_gap;
     /** Coulomb coefficient of the pair, as read from the scene. */
     double friction_coefficient;
-    /** Length of the master segment (the distance between its end
-     * nodes). */
-    double segment_length;
+    /**
+     * How the master face turns along a slide of this node, and where it
+     * ends (slide_profile.h; small sliding's measure, small_sliding.h).
+     */
+    SlideProfile slide;
     /** Slave-face length this node stands for (integral of its shape
      * function along the slave face): pressure = p_n / (length * t). */
     double tributary_length;

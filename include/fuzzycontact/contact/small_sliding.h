@@ -14,12 +14,19 @@
 // bore (the static equilibrium test, static_equilibrium.h, balances the
 // resultants only, and cannot see this).
 //
-// The measure: the slip of a closed slave node, |g_t|, the relative
-// tangential displacement since the unloaded state, divided by the length
-// of its master segment (the distance between the segment's end nodes).
-// The largest over the closed nodes, against a limit (the key `sliding
-// limit`, default 1: one master segment), says whether an answer is within
-// small sliding; beyond it, the bodies slide (gross sliding).
+// The measure (slide_profile.h): a slide along a flat master face changes
+// nothing, whatever its length; what matters is how far the master face's
+// normal turns under the slid node (a curved face, a kink between faces),
+// and whether the node slides off the master face. For each closed slave
+// node, its slip g_t (the relative tangential displacement since the
+// unloaded state) is walked along the master face from its projection; the
+// largest turn of the master normal met on the way, over the closed nodes,
+// against a limit (the key `sliding angle limit`, default 5 degrees), says
+// whether an answer is within small sliding; a node that slides off the
+// master face (beyond a tenth of its last segment) is beyond any limit.
+// Beyond, the bodies slide (gross sliding). The measure does not depend on
+// the mesh: a finer mesh of the same curve turns by the same angle over the
+// same slide.
 
 #ifndef fuzzycontact_contact_small_sliding_h
 #define fuzzycontact_contact_small_sliding_h
@@ -33,32 +40,37 @@
 
 namespace FuzzyContact
 {
-  /** The largest slip of a solution's closed nodes (see the top). */
+  /** The largest slide of a solution's closed nodes (see the top). */
   struct SlidingExtent
   {
-    /** |g_t| / master segment length of the node (0: no closed node). */
-    double ratio = 0;
-    /** The node, its slip [m] and its master segment's length [m]. */
-    unsigned int node   = 0;
-    double       slip   = 0;
-    double       length = 0;
+    /**
+     * The largest turn of the master normal along the node's slide
+     * [degrees]; INFINITY if it slides off the master face (0: no closed
+     * node).
+     */
+    double angle = 0;
+    /** The node and its slip [m] along the master's tangent. */
+    unsigned int node = 0;
+    double       slip = 0;
   };
 
-  /** The largest slip of the closed nodes of @p solution on @p interface. */
+  /** The largest slide of the closed nodes of @p solution on @p interface. */
   SlidingExtent
   largest_sliding(const ContactInterface &interface,
                   const ContactSolution  &solution);
 
   /**
-   * An answer beyond small sliding: a closed node slid farther than the
-   * limit (the message says which, by how much, and names the key).
+   * An answer beyond small sliding: the master face turned by more than the
+   * limit under a closed node's slide, or the node slid off it (the message
+   * says which node, by how much, and names the key).
    */
   DeclException1(ExcBeyondSmallSliding, std::string, << arg1);
 
   /**
-   * Throws ExcBeyondSmallSliding if a closed node of @p solution slid
-   * farther than @p limit times its master segment's length; @p what names
-   * the solve in the message.
+   * Throws ExcBeyondSmallSliding if the master normal turns by more than
+   * @p limit degrees along a closed node's slide in @p solution, or the
+   * node slides off the master face; @p what names the solve in the
+   * message.
    */
   void
   check_small_sliding(const ContactInterface &interface,
@@ -66,8 +78,8 @@ namespace FuzzyContact
                       const double            limit,
                       const std::string      &what);
 
-  /** The default limit, in master segment lengths. */
-  constexpr double default_sliding_limit = 1;
+  /** The default limit [degrees]. */
+  constexpr double default_sliding_limit = 5;
 } // namespace FuzzyContact
 
 #endif

@@ -29,7 +29,8 @@ namespace FuzzyContact
   /**
    * The keys of the contact formulation a step file sets: "penetration
    * tolerance" (initial penetration accepted as round-off, relative to the
-   * master face length) and "sliding limit" (contact/small_sliding.h).
+   * master face length) and "sliding angle limit"
+   * (contact/small_sliding.h).
    */
   struct ContactFormulation
   {
@@ -41,7 +42,7 @@ namespace FuzzyContact
     declare_parameters(ParameterHandler &prm);
     void
     parse_parameters(ParameterHandler &prm);
-    /** "sliding limit" alone (step-4, whose penetration tolerance is
+    /** "sliding angle limit" alone (step-4, whose penetration tolerance is
      * fixed). */
     static void
     declare_sliding_limit(ParameterHandler &prm);
@@ -82,9 +83,10 @@ namespace FuzzyContact
     const ContactInterface &
     interface() const;
     /**
-     * The limit of small sliding (contact/small_sliding.h), in master
-     * segment lengths: the full-order and reduced models refuse an answer
-     * beyond it (ExcBeyondSmallSliding). Default default_sliding_limit.
+     * The limit of small sliding (contact/small_sliding.h) [degrees]: the
+     * largest turn of the master normal along a slide; the full-order and
+     * reduced models refuse an answer beyond it (ExcBeyondSmallSliding).
+     * Default default_sliding_limit.
      */
     void
     set_sliding_limit(const double limit);

@@ -84,14 +84,13 @@ namespace FuzzyContact
      */
     bool modes_when_needed = true;
     /**
-     * The limit of small sliding, in master segment lengths
-     * (contact/small_sliding.h): beyond it a point counts as without
-     * static equilibrium (the bodies slide).
+     * The limit of small sliding [degrees] (contact/small_sliding.h): beyond it
+     * a point counts as without static equilibrium (the bodies slide).
      */
     double sliding_limit = default_sliding_limit;
 
     /**
-     * Declares "mesh refinements", "contact solver", "sliding limit" and
+     * Declares "mesh refinements", "contact solver", "sliding angle limit" and
      * the subsections
      * "Reduced models" (static correction, zone correction, modes), "Modal
      * analysis", "Reanalysis", "FL2C" and "Exact contact solver".
@@ -270,7 +269,7 @@ namespace FuzzyContact
     /**
      * Evaluations (reduced() and full_order(), on this rank so far) whose
      * answer slid beyond small sliding (contact/small_sliding.h: the key
-     * `sliding limit`): the bodies slide, and the point counts as without
+     * `sliding angle limit`): the bodies slide, and the point counts as without
      * static equilibrium. Where every body is supported, such an answer is
      * an error instead.
      */
