@@ -62,6 +62,23 @@ namespace FuzzyContact
         at[faces[f].nodes.front().dofs[0]].push_back({{int(f), 0}});
         at[faces[f].nodes.back().dofs[0]].push_back({{int(f), 1}});
       }
+    samples_.resize(faces.size());
+    for (unsigned int f = 0; f < faces.size(); ++f)
+      {
+        Samples &samples = samples_[f];
+        samples.arc[0]   = 0;
+        for (unsigned int i = 0; i < 5; ++i)
+          {
+            samples.normal[i] = faces[f].normal(i / 4.);
+            if (i > 0)
+              samples.arc[i] =
+                samples.arc[i - 1] +
+                (faces[f].straight
+                   ? 0.25 * faces[f].nodes.front().position.distance(
+                              faces[f].nodes.back().position)
+                   : arc_length(faces[f], (i - 1) / 4., i / 4.));
+          }
+      }
     neighbours_.assign(faces.size(), {{{{-1, -1}}, {{-1, -1}}}});
     for (unsigned int f = 0; f < faces.size(); ++f)
       for (unsigned int end = 0; end < 2; ++end)
@@ -112,25 +129,35 @@ namespace FuzzyContact
         int step = (along >= 0 ? 1 : -1);
         for (unsigned int visited = 0; visited <= faces_.size(); ++visited)
           {
-            const FaceGeometry &F     = faces_[f];
-            const double        t_end = (step > 0 ? 1. : 0.);
-            if (F.straight)
+            const FaceGeometry &F = faces_[f];
+            if (visited == 0)
               {
-                reach(angle_between(normal, F.normal(0.5)));
-                s +=
-                  F.nodes.front().position.distance(F.nodes.back().position) *
-                  std::abs(t_end - tc);
+                // The start face, from the projection to its end.
+                const double t_end = (step > 0 ? 1. : 0.);
+                if (F.straight)
+                  s +=
+                    F.nodes.front().position.distance(F.nodes.back().position) *
+                    std::abs(t_end - tc);
+                else
+                  for (unsigned int i = 0; i < 4; ++i)
+                    {
+                      const double ta = tc + (t_end - tc) * i / 4;
+                      const double tb = tc + (t_end - tc) * (i + 1) / 4;
+                      s += arc_length(F, ta, tb);
+                      reach(angle_between(normal, F.normal(tb)));
+                    }
               }
             else
               {
-                reach(angle_between(normal, F.normal(tc)));
-                const unsigned int n_pieces = 4;
-                for (unsigned int i = 0; i < n_pieces; ++i)
+                // A whole face, entered at its end tc (its samples).
+                const Samples &samples = samples_[f];
+                const double   s0      = s;
+                for (unsigned int j = 0; j < 5; ++j)
                   {
-                    const double ta = tc + (t_end - tc) * i / n_pieces;
-                    const double tb = tc + (t_end - tc) * (i + 1) / n_pieces;
-                    s += arc_length(F, ta, tb);
-                    reach(angle_between(normal, F.normal(tb)));
+                    const unsigned int i = (step > 0 ? j : 4 - j);
+                    s                    = s0 + (step > 0 ? samples.arc[i]
+                                                          : samples.arc[4] - samples.arc[i]);
+                    reach(angle_between(normal, samples.normal[i]));
                   }
               }
             if (largest >= 0.5 * M_PI)

@@ -62,6 +62,19 @@ namespace FuzzyContact
         s += x;
       return s;
     }
+
+    // A line about @p n evaluations that were counted as without
+    // equilibrium or left out (none: no line); a warning if @p warning.
+    void
+    evaluations_line(std::ostream       &out,
+                     const unsigned long n,
+                     const bool          warning,
+                     const std::string  &text)
+    {
+      if (n > 0)
+        out << "  " << (warning ? "warning: " : "") << n << " evaluation(s) "
+            << text << "\n";
+    }
   } // namespace
 
 
@@ -138,44 +151,46 @@ namespace FuzzyContact
                 << " of " << sum(r.reference.n_points) << " samples";
           out << ", counted per level)\n";
         }
-      if (r.n_at_limit > 0)
-        out << "  " << r.n_at_limit
-            << " evaluation(s) at the limit of equilibrium (the loads need "
-               "all but 1e-6 of the friction: the static answer is "
-               "degenerate there, a body about to slide may slip any amount) "
-               "failed in the contact solver and were counted as without "
-               "equilibrium\n";
+      evaluations_line(
+        out,
+        r.n_at_limit,
+        false,
+        "at the limit of equilibrium (the loads need all but 1e-6 of the "
+        "friction: the static answer is degenerate there, a body about to "
+        "slide may slip any amount) failed in the contact solver and were "
+        "counted as without equilibrium");
       j["n_at_limit"] = r.n_at_limit;
-      if (r.n_unsolved_near_limit > 0)
-        out << "  warning: " << r.n_unsolved_near_limit
-            << " evaluation(s) near the limit of equilibrium (the loads need "
-               "more than "
-            << 100 * (1 - FuzzyContactModel::near_limit_margin)
-            << " % of the friction) failed in the contact solver and were "
-               "left out as if without equilibrium: the bounds next to the "
-               "edge of equilibrium may miss them (doc/contact.md, section "
-               "1)\n";
+      evaluations_line(
+        out,
+        r.n_unsolved_near_limit,
+        true,
+        "near the limit of equilibrium (the loads need more than " +
+          number(100 * (1 - FuzzyContactModel::near_limit_margin)) +
+          " % of the friction) failed in the contact solver and were left "
+          "out as if without equilibrium: the bounds next to the edge of "
+          "equilibrium may miss them (doc/contact.md, section 1)");
       j["n_unsolved_near_limit"] = r.n_unsolved_near_limit;
-      if (r.n_beyond_small_sliding > 0)
-        out << "  " << r.n_beyond_small_sliding
-            << " evaluation(s) had contact forces within the friction "
-               "cones only after the bodies slid farther than node-to-"
-               "segment contact answers (a closed node beyond 'sliding "
-               "limit' master segments, at the point's friction or with "
-               "more: the bodies slide) and were counted as without "
-               "equilibrium\n";
+      evaluations_line(
+        out,
+        r.n_beyond_small_sliding,
+        false,
+        "had contact forces within the friction cones only after the bodies "
+        "slid farther than node-to-segment contact answers (the master face "
+        "turned by more than 'sliding angle limit' under a closed node's "
+        "slide, or a node slid off it, at the point's friction or with "
+        "more: the bodies slide) and were counted as without equilibrium");
       j["n_beyond_small_sliding"] = r.n_beyond_small_sliding;
-      if (r.n_unsolved_below_sliding_limit > 0)
-        out << "  warning: " << r.n_unsolved_below_sliding_limit
-            << " evaluation(s) failed in the contact solver below the "
-               "friction that holds the bodies within small sliding (with "
-               "their friction times up to "
-            << number(r.unsolved_sliding_factor, 4)
-            << " the solves answer within it; with less they fail, as "
-               "they do where the cones hold the load only after gross "
-               "sliding) and were left out as if without equilibrium: the "
-               "bounds next to the edge of equilibrium may miss them "
-               "(doc/contact.md, section 1)\n";
+      evaluations_line(
+        out,
+        r.n_unsolved_below_sliding_limit,
+        true,
+        "failed in the contact solver below the friction that holds the "
+        "bodies within small sliding (with their friction times up to " +
+          number(r.unsolved_sliding_factor, 4) +
+          " the solves answer within it; with less they fail, as they do "
+          "where the cones hold the load only after gross sliding) and were "
+          "left out as if without equilibrium: the bounds next to the edge "
+          "of equilibrium may miss them (doc/contact.md, section 1)");
       j["n_unsolved_below_sliding_limit"] = r.n_unsolved_below_sliding_limit;
       j["unsolved_sliding_factor"]        = r.unsolved_sliding_factor;
 

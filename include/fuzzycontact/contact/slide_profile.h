@@ -88,6 +88,14 @@ namespace FuzzyContact
     // Per face and end (0: t = 0, 1: t = 1): the neighbouring face sharing
     // that end node and the neighbour's end there (-1: none).
     std::vector<std::array<std::array<int, 2>, 2>> neighbours_;
+    // Per face: its normal and the arc length from t = 0 at t = i / 4
+    // (i = 0, ..., 4), computed once for every node's walk.
+    struct Samples
+    {
+      std::array<Tensor<1, 2>, 5> normal;
+      std::array<double, 5>       arc;
+    };
+    std::vector<Samples> samples_;
   };
 } // namespace FuzzyContact
 
