@@ -57,7 +57,8 @@ namespace FuzzyContact
     std::map<types::global_dof_index, std::vector<std::array<int, 2>>> at;
     for (unsigned int f = 0; f < faces.size(); ++f)
       {
-        Assert(faces[f].ts.front() == 0 && faces[f].ts.back() == 1,
+        Assert(std::abs(faces[f].ts.front()) < 1e-12 &&
+                 std::abs(faces[f].ts.back() - 1) < 1e-12,
                ExcInternalError());
         at[faces[f].nodes.front().dofs[0]].push_back({{int(f), 0}});
         at[faces[f].nodes.back().dofs[0]].push_back({{int(f), 1}});
