@@ -138,7 +138,7 @@ namespace FuzzyContact
       {
         if (held_with_friction && !admissible_forces(step, frictionless, p0))
           {
-            const double s_min        = least_friction_factor(step, mu, 0, 1);
+            const double s_min = least_friction_factor(step, mu, 0, 1, 1e-3);
             const double final_margin = std::max(1 - s_min, 1e-12);
             double       margin = 1, next = 1;
             while (true)

@@ -236,13 +236,18 @@ namespace FuzzyContact
   least_friction_factor(const LoadStep            &step,
                         const std::vector<double> &mu,
                         double                     low,
-                        double                     high)
+                        double                     high,
+                        const double               distance_tolerance)
   {
     Assert(low >= 0 && high > low, ExcInternalError());
+    Assert(distance_tolerance >= 0, ExcInternalError());
     std::vector<double> scaled(mu.size());
     Vector<double>      p;
     for (unsigned int i = 0; i < 100 && high - low > 1e-12 * high; ++i)
       {
+        if (distance_tolerance > 0 &&
+            high - low <= distance_tolerance * std::abs(1 - high))
+          break;
         const double middle =
           low > 0 ? std::sqrt(low * high) : (low + high) / 2;
         for (unsigned int k = 0; k < mu.size(); ++k)

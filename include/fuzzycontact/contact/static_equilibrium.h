@@ -41,14 +41,19 @@ namespace FuzzyContact
    * The least factor s in [@p low, @p high] such that the friction
    * coefficients s @p mu can hold the bodies held by contact alone
    * (admissible_forces()), by bisection (on a logarithmic scale if @p low
-   * > 0) to a relative width of 1e-12. The caller knows that @p high can
-   * hold them and @p low cannot.
+   * > 0) to a relative width of 1e-12, or, if @p distance_tolerance > 0,
+   * until the width is at most @p distance_tolerance times the distance
+   * 1 - s of the factor to 1 (all the path of friction coefficients
+   * needs, active_set_solver.cc: far from the limit a dozen tests instead
+   * of forty). The caller knows that @p high can hold them and @p low
+   * cannot. Returns a factor that can hold them.
    */
   double
   least_friction_factor(const LoadStep            &step,
                         const std::vector<double> &mu,
                         double                     low,
-                        double                     high);
+                        double                     high,
+                        const double               distance_tolerance = 0);
 
   /**
    * What check_equilibrium() throws (its message says why and what
