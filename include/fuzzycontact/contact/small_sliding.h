@@ -3,10 +3,11 @@
 // The contact interface (contact_interface.h) is built once, in the
 // reference configuration: each slave node keeps its master segment, its
 // projection point, the normal and the tangent there, whatever the
-// displacements. That holds while a node slides along the master face by
-// a small part of its segment. A node that slides farther would lie over
-// another segment, and on a curved face under another normal: the answer
-// of the linear problem is then not that of the bodies. It happens where
+// displacements. That holds while the master face keeps that normal
+// under the node's slide. A node that slides farther along a curved face,
+// or past a kink, lies under another normal, and one that slides off the
+// master face over none: the answer of the linear problem is then not
+// that of the bodies. It happens where
 // the bodies cannot be held in small displacements at all: a pin in a bore
 // whose friction cannot hold the torque of its load has, in the linear
 // problem, an "equilibrium" in which it turns and shifts by metres against
