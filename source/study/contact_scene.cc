@@ -12,6 +12,21 @@
 
 namespace FuzzyContact
 {
+  namespace
+  {
+    // The limit of small sliding [degrees], refused outside (0, 90).
+    double
+    checked_sliding_limit(const double limit)
+    {
+      AssertThrow(limit > 0 && limit < 90,
+                  ExcMessage("sliding angle limit must lie between 0 and 90 "
+                             "degrees, got " +
+                             Utilities::to_string(limit) + "."));
+      return limit;
+    }
+  } // namespace
+
+
   void
   ContactFormulation::declare_parameters(ParameterHandler &prm)
   {
@@ -54,12 +69,7 @@ namespace FuzzyContact
   double
   ContactFormulation::parse_sliding_limit(ParameterHandler &prm)
   {
-    const double limit = prm.get_double("sliding angle limit");
-    AssertThrow(limit > 0 && limit < 90,
-                ExcMessage("sliding angle limit must lie between 0 and 90 "
-                           "degrees, got " +
-                           Utilities::to_string(limit) + "."));
-    return limit;
+    return checked_sliding_limit(prm.get_double("sliding angle limit"));
   }
 
 
@@ -117,10 +127,7 @@ namespace FuzzyContact
   void
   ContactScene::set_sliding_limit(const double limit)
   {
-    AssertThrow(limit > 0 && limit < 90,
-                ExcMessage("sliding angle limit: must lie between 0 and 90 "
-                           "degrees."));
-    sliding_limit_ = limit;
+    sliding_limit_ = checked_sliding_limit(limit);
   }
 
 

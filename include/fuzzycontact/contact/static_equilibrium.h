@@ -44,9 +44,10 @@ namespace FuzzyContact
    * > 0) to a relative width of 1e-12, or, if @p distance_tolerance > 0,
    * until the width is at most @p distance_tolerance times the distance
    * 1 - s of the factor to 1 (all the path of friction coefficients
-   * needs, active_set_solver.cc: far from the limit a dozen tests instead
-   * of forty). The caller knows that @p high can hold them and @p low
-   * cannot. Returns a factor that can hold them.
+   * needs, active_set_solver.cc: far from the limit about a dozen tests
+   * instead of about forty, by the bisection's arithmetic). The caller knows
+   * that @p high can hold them and @p low cannot. Returns a factor that can
+   * hold them.
    */
   double
   least_friction_factor(const LoadStep            &step,
