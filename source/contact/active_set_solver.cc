@@ -49,7 +49,8 @@ namespace FuzzyContact
     //    warm start can lead the iterations where the load path does not
     //    (a slip zone that spreads over the interface a few nodes per
     //    iteration, or a cycle);
-    //  - with bodies held by contact alone and friction, from that state
+    //  - with bodies held by contact alone and friction (and the last
+    //    resorts allowed, ActiveSetParameters), from that state
     //    with slips allowed to reverse at once: near the limit of
     //    equilibrium (a body that almost slides, every node but a few
     //    slipping) a slip that reverses is a small change of the free
@@ -67,7 +68,7 @@ namespace FuzzyContact
     if (step.start != nullptr)
       attempts.push_back({&step, true});
     attempts.push_back({&cold, true});
-    if (held_with_friction)
+    if (held_with_friction && parameters_.last_resorts)
       attempts.push_back({&cold, false});
     // What the load path's attempt said, for the final message.
     std::string message;
@@ -94,7 +95,8 @@ namespace FuzzyContact
         {
           // (Without a ramp to follow, the last attempt's message is the
           // answer.)
-          if (!held_with_friction && &attempt == &attempts.back())
+          if (!(held_with_friction && parameters_.last_resorts) &&
+              &attempt == &attempts.back())
             throw;
           if (attempt.step == &cold && attempt.stick_before_reversal)
             message = Input::message_of(e);

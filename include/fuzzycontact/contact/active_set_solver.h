@@ -83,6 +83,14 @@ namespace FuzzyContact
      * but 1e-6 of the friction takes 20 successful solves.
      */
     unsigned int max_path_solves = 32;
+    /**
+     * Whether a step of bodies held by contact alone with friction that
+     * fails from its starts is tried again with slips allowed to reverse
+     * at once, then along the path of friction coefficients (the last
+     * resorts of active_set_solver.cc). Not a key: a fuzzy study's probes
+     * of failed points go without them (study/fuzzy_contact_model.h).
+     */
+    bool last_resorts = true;
 
     static void
     declare_parameters(ParameterHandler &prm);
