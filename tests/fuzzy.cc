@@ -1960,8 +1960,8 @@ TEST(FuzzyStudyReport, PointsLeftOutNearTheLimitAreAWarning)
     {
       FuzzyStudyResults r =
         one_output_results(Interval{0., 1.}, Interval{0., 1.});
-      r.has_equilibrium       = true;
-      r.n_unsolved_near_limit = n;
+      r.has_equilibrium                = true;
+      r.unanswered.unsolved_near_limit = n;
       nlohmann::json    json;
       const std::string text = FuzzyStudyReport::equilibrium(r, json);
       EXPECT_EQ(text.find("warning: 3 evaluation(s) near the limit of "

@@ -22,6 +22,7 @@
 #include <fuzzycontact/study/fuzzy_contact_model.h>
 #include <fuzzycontact/study/observations.h>
 #include <fuzzycontact/study/reduced_order_model.h>
+#include <fuzzycontact/study/sliding_probes.h>
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
@@ -858,8 +859,8 @@ TEST(FloatingBodies, AFailureNearTheLimitOfSlidingLeavesThePointOut)
     << "the reduced exact solver now converges here: choose another point";
   EXPECT_TRUE(model.full_order(failing).empty())
     << "the full-order solver now converges here: choose another point";
-  EXPECT_EQ(model.n_unsolved_near_limit(), 2u);
-  EXPECT_EQ(model.n_at_limit_of_equilibrium(), 0u);
+  EXPECT_EQ(model.unanswered().unsolved_near_limit, 2u);
+  EXPECT_EQ(model.unanswered().at_limit, 0u);
 
   for (const bool full : {false, true})
     {
@@ -870,14 +871,14 @@ TEST(FloatingBodies, AFailureNearTheLimitOfSlidingLeavesThePointOut)
       EXPECT_NEAR(v[0], 2e5, 1e-9 * 2e5);
       EXPECT_NEAR(std::abs(v[1]), 4e4, 1e-9 * 2e5);
     }
-  EXPECT_EQ(model.n_unsolved_near_limit(), 2u);
+  EXPECT_EQ(model.unanswered().unsolved_near_limit, 2u);
 
   settings.exact.max_iterations = 2;
   FuzzyContactModel         strict(s, set, outputs, settings);
   const std::vector<double> far = {15e9, 0.3, 0.5, 10e3};
   EXPECT_THROW(strict.reduced(far), ExceptionBase);
   EXPECT_THROW(strict.full_order(far), ExceptionBase);
-  EXPECT_EQ(strict.n_unsolved_near_limit(), 0u);
+  EXPECT_EQ(strict.unanswered().unsolved_near_limit, 0u);
 }
 
 // The contact patch test (prm/patch-test.prm: two steel blocks, non-matching
@@ -1068,17 +1069,94 @@ TEST(FloatingBodies, APinInItsBoreSlidesBeyondSmallSlidingBelowStatics)
   ASSERT_EQ(v.size(), 2u);
   EXPECT_NEAR(std::abs(v[1]), T / R_b, 1e-3 * T / R_b);
   EXPECT_TRUE(model.reduced({210e9, 0.93 * mu_s, F}).empty());
-  EXPECT_EQ(model.n_beyond_small_sliding(), 1u);
+  EXPECT_EQ(model.unanswered().beyond_small_sliding, 1u);
   EXPECT_TRUE(model.full_order({210e9, 0.93 * mu_s, F}).empty());
-  EXPECT_EQ(model.n_beyond_small_sliding(), 2u);
+  EXPECT_EQ(model.unanswered().beyond_small_sliding, 2u);
   // At 0.98 mu_s every solve fails (the active set cycles); more friction
   // answers within small sliding, none beyond it.
   EXPECT_TRUE(model.reduced({210e9, 0.98 * mu_s, F}).empty());
-  EXPECT_EQ(model.n_beyond_small_sliding() +
-              model.n_unsolved_below_sliding_limit(),
+  EXPECT_EQ(model.unanswered().beyond_small_sliding +
+              model.unanswered().unsolved_below_sliding_limit,
             3u);
-  EXPECT_EQ(model.n_unsolved_near_limit(), 0u);
-  EXPECT_LE(model.unsolved_sliding_factor(), 1.125);
+  EXPECT_EQ(model.unanswered().unsolved_near_limit, 0u);
+  EXPECT_LE(model.unanswered().sliding_factor, 1.125);
+}
+
+// The probes of a failed point (study/sliding_probes.h) give the verdict of
+// the first answer upwards, checked against that scan itself over random
+// answers that are monotone in the friction (beyond below a factor, within
+// above it, failures anywhere), with fewer failed probes where the answer
+// beyond comes at twice the friction.
+TEST(SlidingProbes, FirstAnswerUpwardsWithFewerFailedProbes)
+{
+  const std::vector<double> f = sliding_probe_factors(11, 8);
+  ASSERT_EQ(f.size(), 13u);
+  EXPECT_DOUBLE_EQ(f.front(), 1 + std::ldexp(1., -10));
+  EXPECT_DOUBLE_EQ(f[10], 2.);
+  EXPECT_DOUBLE_EQ(f.back(), 8.);
+  std::mt19937 random(7);
+  unsigned int n_beyond = 0, n_within = 0, n_none = 0;
+  for (unsigned int trial = 0; trial < 2000; ++trial)
+    {
+      // Beyond below factor b, within from b on, each failing with
+      // probability q.
+      const unsigned int          b = random() % (f.size() + 1);
+      const double                q = (random() % 5) / 4.;
+      std::vector<int>            table(f.size());
+      std::bernoulli_distribution fails(q);
+      for (unsigned int i = 0; i < f.size(); ++i)
+        table[i] = fails(random) ? 0 : i < b ? -1 : 1;
+      // The scan upwards.
+      unsigned int first = 0;
+      while (first < f.size() && table[first] == 0)
+        ++first;
+      std::vector<bool>    probed(f.size(), false);
+      unsigned int         failed = 0;
+      const SlidingVerdict v      = probe_sliding(f, [&](const double factor) {
+        const unsigned int i =
+          std::find(f.begin(), f.end(), factor) - f.begin();
+        EXPECT_LT(i, f.size());
+        EXPECT_FALSE(probed[i]); // (each factor once)
+        probed[i] = true;
+        failed += table[i] == 0;
+        return table[i];
+      });
+      EXPECT_EQ(v.failed, failed);
+      EXPECT_LE(v.probes, f.size());
+      if (first == f.size())
+        {
+          ++n_none;
+          EXPECT_EQ(v.kind, SlidingVerdict::none);
+          EXPECT_EQ(v.probes, f.size());
+        }
+      else if (table[first] < 0)
+        {
+          ++n_beyond;
+          EXPECT_EQ(v.kind, SlidingVerdict::beyond);
+        }
+      else
+        {
+          ++n_within;
+          EXPECT_EQ(v.kind, SlidingVerdict::within_with_more);
+          EXPECT_EQ(v.factor, f[first]);
+        }
+    }
+  EXPECT_GT(n_beyond, 100u);
+  EXPECT_GT(n_within, 100u);
+  EXPECT_GT(n_none, 50u);
+  // Within just above the point: one probe. Beyond at twice the friction
+  // after failures everywhere below: two probes, not the eleven upwards.
+  std::vector<int> table(f.size(), 1);
+  const auto       by_table = [&](const double factor) {
+    return table[std::find(f.begin(), f.end(), factor) - f.begin()];
+  };
+  EXPECT_EQ(probe_sliding(f, by_table).probes, 1u);
+  std::fill(table.begin(), table.begin() + 10, 0);
+  table[10]                 = -1;
+  const SlidingVerdict late = probe_sliding(f, by_table);
+  EXPECT_EQ(late.kind, SlidingVerdict::beyond);
+  EXPECT_EQ(late.probes, 2u);
+  EXPECT_EQ(late.failed, 1u);
 }
 
 // ----------------------------------------------------------------------------

@@ -153,46 +153,54 @@ namespace FuzzyContact
         }
       evaluations_line(
         out,
-        r.n_at_limit,
+        r.unanswered.at_limit,
         false,
         "at the limit of equilibrium (the loads need all but 1e-6 of the "
         "friction: the static answer is degenerate there, a body about to "
         "slide may slip any amount) failed in the contact solver and were "
         "counted as without equilibrium");
-      j["n_at_limit"] = r.n_at_limit;
+      j["n_at_limit"] = r.unanswered.at_limit;
       evaluations_line(
         out,
-        r.n_unsolved_near_limit,
+        r.unanswered.unsolved_near_limit,
         true,
         "near the limit of equilibrium (the loads need more than " +
           number(100 * (1 - FuzzyContactModel::near_limit_margin)) +
           " % of the friction) failed in the contact solver and were left "
           "out as if without equilibrium: the bounds next to the edge of "
           "equilibrium may miss them (doc/contact.md, section 1)");
-      j["n_unsolved_near_limit"] = r.n_unsolved_near_limit;
+      j["n_unsolved_near_limit"] = r.unanswered.unsolved_near_limit;
       evaluations_line(
         out,
-        r.n_beyond_small_sliding,
+        r.unanswered.beyond_small_sliding,
         false,
         "had contact forces within the friction cones only after the bodies "
         "slid farther than node-to-segment contact answers (the master face "
         "turned by more than 'sliding angle limit' under a closed node's "
         "slide, or a node slid off it, at the point's friction or with "
         "more: the bodies slide) and were counted as without equilibrium");
-      j["n_beyond_small_sliding"] = r.n_beyond_small_sliding;
+      j["n_beyond_small_sliding"] = r.unanswered.beyond_small_sliding;
       evaluations_line(
         out,
-        r.n_unsolved_below_sliding_limit,
+        r.unanswered.unsolved_below_sliding_limit,
         true,
         "failed in the contact solver below the friction that holds the "
         "bodies within small sliding (with their friction times up to " +
-          number(r.unsolved_sliding_factor, 4) +
+          number(r.unanswered.sliding_factor, 4) +
           " the solves answer within it; with less they fail, as they do "
           "where the cones hold the load only after gross sliding) and were "
           "left out as if without equilibrium: the bounds next to the edge "
           "of equilibrium may miss them (doc/contact.md, section 1)");
-      j["n_unsolved_below_sliding_limit"] = r.n_unsolved_below_sliding_limit;
-      j["unsolved_sliding_factor"]        = r.unsolved_sliding_factor;
+      j["n_unsolved_below_sliding_limit"] =
+        r.unanswered.unsolved_below_sliding_limit;
+      j["unsolved_sliding_factor"] = r.unanswered.sliding_factor;
+      // What the failed points' verdicts cost (doc/contact.md, section 1).
+      if (r.unanswered.probes > 0)
+        out << "  the failed solves' verdicts took " << r.unanswered.probes
+            << " probe(s) with more friction, " << r.unanswered.failed_probes
+            << " of which failed too\n";
+      j["n_sliding_probes"]        = r.unanswered.probes;
+      j["n_failed_sliding_probes"] = r.unanswered.failed_probes;
 
       j["sliding_possible"] = {{"possible", e.possible},
                                {"membership", e.membership},

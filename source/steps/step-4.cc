@@ -386,17 +386,8 @@ namespace Step4
   void
   FuzzyStudy::write_output()
   {
-    results.ranks = model->work_per_rank();
-    results.n_at_limit =
-      Utilities::MPI::sum(model->n_at_limit_of_equilibrium(), comm);
-    results.n_unsolved_near_limit =
-      Utilities::MPI::sum(model->n_unsolved_near_limit(), comm);
-    results.n_beyond_small_sliding =
-      Utilities::MPI::sum(model->n_beyond_small_sliding(), comm);
-    results.n_unsolved_below_sliding_limit =
-      Utilities::MPI::sum(model->n_unsolved_below_sliding_limit(), comm);
-    results.unsolved_sliding_factor =
-      Utilities::MPI::max(model->unsolved_sliding_factor(), comm);
+    results.ranks      = model->work_per_rank();
+    results.unanswered = model->unanswered().summed_over(comm);
     nlohmann::json json;
     FuzzyStudyReport::bounds(results, report, json);
     json["contact_solver"] = model->contact_solver();

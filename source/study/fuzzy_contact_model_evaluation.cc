@@ -10,7 +10,9 @@
 #include <fuzzycontact/study/fuzzy_contact_model.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -59,8 +61,8 @@ namespace FuzzyContact
             // A solve that fails is the evaluations' to count or report,
             // unless more friction slides beyond small sliding already.
             if (!at_limit_of_equilibrium(near_limit_margin))
-              feasible = sliding_with_more_friction(values).kind ==
-                         SlidingEvidence::none;
+              feasible =
+                sliding_with_more_friction(values).kind == SlidingVerdict::none;
           }
       return std::vector<double>();
     });
@@ -129,18 +131,19 @@ namespace FuzzyContact
     // At the limit the static answer is degenerate (a body about to slide
     // may slip any amount); near it, the point is left out with a warning.
     if (at_limit_of_equilibrium())
-      ++n_limit_points;
+      ++unanswered_.at_limit;
     else if (at_limit_of_equilibrium(near_limit_margin))
-      ++n_unsolved;
+      ++unanswered_.unsolved_near_limit;
     else
       {
-        const SlidingEvidence evidence = sliding_with_more_friction(values);
-        if (evidence.kind == SlidingEvidence::beyond)
-          ++n_gross_sliding;
-        else if (evidence.kind == SlidingEvidence::within_with_more)
+        const SlidingVerdict verdict = sliding_with_more_friction(values);
+        if (verdict.kind == SlidingVerdict::beyond)
+          ++unanswered_.beyond_small_sliding;
+        else if (verdict.kind == SlidingVerdict::within_with_more)
           {
-            ++n_unsolved_sliding;
-            sliding_factor = std::max(sliding_factor, evidence.factor);
+            ++unanswered_.unsolved_below_sliding_limit;
+            unanswered_.sliding_factor =
+              std::max(unanswered_.sliding_factor, verdict.factor);
           }
         else
           return false;
@@ -149,70 +152,37 @@ namespace FuzzyContact
   }
 
 
-  FuzzyContactModel::SlidingEvidence
+  SlidingVerdict
   FuzzyContactModel::sliding_with_more_friction(
     const std::vector<double> &values)
   {
-    // Where the cones hold the load only after the bodies slid beyond
-    // small sliding (a pin that would spin in its bore), the active set
-    // iterations often cycle instead of converging to that answer, at
-    // some friction coefficients and not at others nearby. More friction
-    // holds the bodies better (less friction, more slip), so an answer
-    // with more friction that already slides beyond small sliding says
-    // that the point's own does too. The point is solved again with its
-    // friction coefficients times 1 + 2^-k, from k = sliding_probes - 1
-    // (just above the point) down to k = 0 (twice the friction), then 4
-    // and max_sliding_probe times, until an answer slides beyond small
-    // sliding: then the point does (beyond). An answer within it ends the
-    // probes too: with still more friction the bodies slide less, so no
-    // later probe can slide beyond, and the point's failure lies below the
-    // friction that holds the bodies within small sliding
-    // (within_with_more; probing on past it made two thirds of a pin
-    // study's probes, cheap ones, and never changed a verdict). If no
-    // probe answers, the failure is the solver's (none).
-    const SceneState at     = state(values);
-    const auto       answer = [&](const double factor) {
-      SceneState more = at;
-      for (double &mu : more.friction_coefficients)
-        mu *= factor;
-      reduced_model->set_state(more);
-      try
-        {
-          reduced_model->solve(*probe_solver);
-          return 1;
-        }
-      catch (const ExcBeyondSmallSliding &)
-        {
-          return -1;
-        }
-      catch (const ExceptionBase &)
-        {
-          return 0;
-        }
-    };
-    SlidingEvidence     evidence;
-    std::vector<double> factors;
-    for (int k = sliding_probes - 1; k >= 0; --k)
-      factors.push_back(1 + std::ldexp(1., -k));
-    factors.push_back(4);
-    factors.push_back(max_sliding_probe);
-    for (const double factor : factors)
-      {
-        const int a = answer(factor);
-        if (a < 0)
-          {
-            evidence.kind = SlidingEvidence::beyond;
-            break;
-          }
-        if (a > 0)
-          {
-            evidence.kind   = SlidingEvidence::within_with_more;
-            evidence.factor = factor;
-            break;
-          }
-      }
+    // The probes (sliding_probes.h) by the probe solver.
+    const SceneState     at = state(values);
+    const SlidingVerdict verdict =
+      probe_sliding(sliding_probe_factors(sliding_probes, max_sliding_probe),
+                    [&](const double factor) {
+                      SceneState more = at;
+                      for (double &mu : more.friction_coefficients)
+                        mu *= factor;
+                      reduced_model->set_state(more);
+                      try
+                        {
+                          reduced_model->solve(*probe_solver);
+                          return 1;
+                        }
+                      catch (const ExcBeyondSmallSliding &)
+                        {
+                          return -1;
+                        }
+                      catch (const ExceptionBase &)
+                        {
+                          return 0;
+                        }
+                    });
+    unanswered_.probes += verdict.probes;
+    unanswered_.failed_probes += verdict.failed;
     reduced_model->set_state(at);
-    return evidence;
+    return verdict;
   }
 
 
@@ -242,14 +212,14 @@ namespace FuzzyContact
           // (an error where every body is supported).
           if (!can_lose_equilibrium())
             throw;
-          ++n_gross_sliding;
+          ++unanswered_.beyond_small_sliding;
           return std::vector<double>();
         }
       catch (const ExceptionBase &)
         {
           // At or near the limit of equilibrium a solver that fails
           // counts the point as without equilibrium
-          // (n_unsolved_near_limit()).
+          // (UnansweredEvaluations).
           if (!failure_counts_as_without_equilibrium(values))
             throw;
           return std::vector<double>();
@@ -295,7 +265,7 @@ namespace FuzzyContact
           // (As in reduced().)
           if (!can_lose_equilibrium())
             throw;
-          ++n_gross_sliding;
+          ++unanswered_.beyond_small_sliding;
           return std::vector<double>();
         }
       catch (const ExceptionBase &)
@@ -312,38 +282,27 @@ namespace FuzzyContact
   }
 
 
-  unsigned long
-  FuzzyContactModel::n_at_limit_of_equilibrium() const
+  const FuzzyContactModel::UnansweredEvaluations &
+  FuzzyContactModel::unanswered() const
   {
-    return n_limit_points;
+    return unanswered_;
   }
 
 
-  unsigned long
-  FuzzyContactModel::n_unsolved_near_limit() const
+  FuzzyContactModel::UnansweredEvaluations
+  FuzzyContactModel::UnansweredEvaluations::summed_over(
+    const MPI_Comm comm) const
   {
-    return n_unsolved;
-  }
-
-
-  unsigned long
-  FuzzyContactModel::n_beyond_small_sliding() const
-  {
-    return n_gross_sliding;
-  }
-
-
-  unsigned long
-  FuzzyContactModel::n_unsolved_below_sliding_limit() const
-  {
-    return n_unsolved_sliding;
-  }
-
-
-  double
-  FuzzyContactModel::unsolved_sliding_factor() const
-  {
-    return sliding_factor;
+    UnansweredEvaluations sum;
+    sum.at_limit             = Utilities::MPI::sum(at_limit, comm);
+    sum.unsolved_near_limit  = Utilities::MPI::sum(unsolved_near_limit, comm);
+    sum.beyond_small_sliding = Utilities::MPI::sum(beyond_small_sliding, comm);
+    sum.unsolved_below_sliding_limit =
+      Utilities::MPI::sum(unsolved_below_sliding_limit, comm);
+    sum.sliding_factor = Utilities::MPI::max(sliding_factor, comm);
+    sum.probes         = Utilities::MPI::sum(probes, comm);
+    sum.failed_probes  = Utilities::MPI::sum(failed_probes, comm);
+    return sum;
   }
 
 

@@ -72,35 +72,9 @@ namespace FuzzyContact
     FeasibleRegion equilibrium;
     bool           has_equilibrium = false;
     std::string    free_bodies;
-    /**
-     * Evaluations (over all ranks) at the limit of equilibrium whose solve
-     * failed, counted as without equilibrium
-     * (FuzzyContactModel::n_at_limit_of_equilibrium()).
-     */
-    unsigned long n_at_limit = 0;
-
-    /**
-     * Evaluations (over all ranks) near the limit of equilibrium whose
-     * solve failed, left out as without equilibrium
-     * (FuzzyContactModel::n_unsolved_near_limit()).
-     */
-    unsigned long n_unsolved_near_limit = 0;
-
-    /**
-     * Evaluations (over all ranks) whose answer slid beyond small sliding,
-     * counted as without equilibrium
-     * (FuzzyContactModel::n_beyond_small_sliding()).
-     */
-    unsigned long n_beyond_small_sliding = 0;
-
-    /**
-     * Evaluations (over all ranks) that failed below the friction that
-     * holds the bodies within small sliding, left out as without
-     * equilibrium, and the largest factor of their friction that answered
-     * (FuzzyContactModel::n_unsolved_below_sliding_limit()).
-     */
-    unsigned long n_unsolved_below_sliding_limit = 0;
-    double        unsolved_sliding_factor        = 1;
+    /** The evaluations left unanswered and the probes of failed points,
+     * over all ranks (FuzzyContactModel::unanswered()). */
+    FuzzyContactModel::UnansweredEvaluations unanswered;
 
     /**
      * What the model built in @p offline_time [s] is: its DoFs and outputs.

@@ -50,6 +50,7 @@
 #include <fuzzycontact/study/full_order_model.h>
 #include <fuzzycontact/study/observations.h>
 #include <fuzzycontact/study/reduced_order_model.h>
+#include <fuzzycontact/study/sliding_probes.h>
 #include <fuzzycontact/study/warm_starts.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -234,69 +235,73 @@ namespace FuzzyContact
     equilibrium_region(const std::vector<FuzzyNumber> &numbers,
                        const std::vector<double>      &alpha);
 
-    /**
-     * At the limit of equilibrium (the loads need all but a relative
-     * 1e-6 of every friction coefficient) the static answer is degenerate:
-     * a body about to slide may slip any amount, and the contact solvers
-     * can fail there. reduced() and full_order() count such a point whose
-     * solve failed as without equilibrium (no outputs) instead of an
-     * error; how many they counted on this rank so far.
-     */
-    unsigned long
-    n_at_limit_of_equilibrium() const;
-
     /** The margin of the limit of equilibrium, relative to mu. */
     static constexpr double limit_margin = 1e-6;
-
-    /**
-     * Near the limit of equilibrium (the loads need more than 1 -
-     * near_limit_margin of every friction coefficient, but not all but
-     * limit_margin) the static answer is not degenerate, but the exact
-     * solvers can still fail there (two stacked bodies held by contact
-     * alone: doc/contact.md, section 1). reduced() and full_order() leave
-     * such a point out as if it had no equilibrium (no outputs) instead of
-     * stopping the study; how many they left out on this rank so far. The
-     * report warns of them (the bounds next to the edge of equilibrium may
-     * miss them) and results.json counts them. A solve that fails farther
-     * from the limit is still an error.
-     */
-    unsigned long
-    n_unsolved_near_limit() const;
-
     /** The margin of "near the limit of equilibrium", relative to mu. */
     static constexpr double near_limit_margin = 0.05;
 
     /**
-     * Evaluations (reduced() and full_order(), on this rank so far) whose
-     * answer slid beyond small sliding (contact/small_sliding.h: the key
-     * `sliding angle limit`): the bodies slide, and the point counts as without
-     * static equilibrium. Where every body is supported, such an answer is
-     * an error instead.
+     * The evaluations (reduced() and full_order(), on this rank so far)
+     * that gave no outputs although the static equilibrium test passed,
+     * by why, and the probes of failed points. The report says each
+     * count (a warning for those left out) and results.json has them.
      */
-    unsigned long
-    n_beyond_small_sliding() const;
+    struct UnansweredEvaluations
+    {
+      /**
+       * At the limit of equilibrium (the loads need all but limit_margin
+       * of every friction coefficient) the static answer is degenerate: a
+       * body about to slide may slip any amount, and the contact solvers
+       * can fail there. Such a point whose solve failed counts as without
+       * equilibrium instead of an error.
+       */
+      unsigned long at_limit = 0;
+      /**
+       * Near it (the loads need more than 1 - near_limit_margin of every
+       * friction coefficient) the static answer is not degenerate, but
+       * the exact solvers can still fail there (two stacked bodies held by
+       * contact alone: doc/contact.md, section 1). Such a point whose solve
+       * failed is left out as if it had no equilibrium instead of stopping
+       * the study (the bounds next to the edge of equilibrium may miss
+       * it). A solve that fails farther from the limit is an error, unless
+       * the probes below say otherwise.
+       */
+      unsigned long unsolved_near_limit = 0;
+      /**
+       * The answer slid beyond small sliding (contact/small_sliding.h: the
+       * key `sliding angle limit`), at the point's friction or, its solve
+       * failed, at a probe's (sliding_probes.h): the bodies slide, and the
+       * point counts as without static equilibrium. Where every body is
+       * supported, such an answer is an error instead.
+       */
+      unsigned long beyond_small_sliding = 0;
+      /**
+       * The solve failed below the friction that holds the bodies within
+       * small sliding: a probe with more friction (up to max_sliding_probe
+       * times the point's) answers within small sliding, none slid beyond
+       * it. Away from the limit of equilibrium, where the cones hold the
+       * load only after gross sliding, the active set iterations cycle (a
+       * pin in its bore whose friction cannot hold the torque of its
+       * load). Left out as if without equilibrium; sliding_factor is the
+       * largest factor of the friction that answered (1 if none).
+       */
+      unsigned long unsolved_below_sliding_limit = 0;
+      double        sliding_factor               = 1;
+      /** The probes made, and those of them that failed too. */
+      unsigned long probes = 0, failed_probes = 0;
 
-    /**
-     * Evaluations (on this rank so far) whose solve failed below the
-     * friction that holds the bodies within small sliding: the reduced
-     * model answers within small sliding with more friction (up to
-     * max_sliding_probe times the point's, unsolved_sliding_factor()),
-     * fails with less, and no
-     * answer with more friction slid beyond it. Away from the limit of
-     * equilibrium, where the cones hold the load only after gross
-     * sliding, the active set iterations cycle (a pin in its bore whose
-     * friction cannot hold the torque of its load). They are left out as
-     * if without equilibrium, with a warning.
-     */
-    unsigned long
-    n_unsolved_below_sliding_limit() const;
+      /** The counts summed over the ranks of @p comm (sliding_factor:
+       * the largest). */
+      UnansweredEvaluations
+      summed_over(const MPI_Comm comm) const;
+    };
 
-    /** The largest such factor (1 if none). */
-    double
-    unsolved_sliding_factor() const;
+    /** What the evaluations on this rank left unanswered so far. */
+    const UnansweredEvaluations &
+    unanswered() const;
 
-    /** The friction factors 1 + 2^-k (k = 0, ..., sliding_probes - 1), 4
-     * and max_sliding_probe a failed point is solved again with. */
+    /** The friction factors a failed point is solved again with
+     * (sliding_probe_factors(sliding_probes, max_sliding_probe)). */
     static constexpr int    sliding_probes    = 11;
     static constexpr double max_sliding_probe = 8;
 
@@ -419,7 +424,7 @@ namespace FuzzyContact
               const MPI_Comm                      comm);
 
     // Whether the reduced problem of the current state is at the limit
-    // of equilibrium (see n_at_limit_of_equilibrium()).
+    // of equilibrium (see UnansweredEvaluations::at_limit).
     bool
     at_limit_of_equilibrium(const double margin = limit_margin);
 
@@ -430,21 +435,8 @@ namespace FuzzyContact
     failure_counts_as_without_equilibrium(const std::vector<double> &values);
 
     // What the reduced model answers at @p values with more friction, for
-    // a point whose solve failed (see failure_counts_as_without_equilibrium
-    // in the source).
-    struct SlidingEvidence
-    {
-      enum Kind
-      {
-        none,
-        beyond,
-        within_with_more
-      } kind = none;
-      /** within_with_more: the least factor of the friction that answered
-       * within small sliding. */
-      double factor = 1;
-    };
-    SlidingEvidence
+    // a point whose solve failed (sliding_probes.h; the probes counted).
+    SlidingVerdict
     sliding_with_more_friction(const std::vector<double> &values);
 
     // The reduced model's answer with @p solver, or with the model's own
@@ -482,12 +474,10 @@ namespace FuzzyContact
     std::string              skipped_stages;
     std::vector<std::string> inert_parameters;
     std::string              held_by_contact;
-    unsigned long n_limit_points = 0, n_unsolved = 0, n_gross_sliding = 0,
-                  n_unsolved_sliding = 0;
-    double sliding_factor            = 1;
+    UnansweredEvaluations    unanswered_;
     // The exact reduced solver of sliding_with_more_friction(): the
-    // study's settings with fewer iterations and path solves (a probe
-    // that does not converge quickly says nothing).
+    // study's settings with fewer iterations and without the last
+    // resorts (a probe that does not converge quickly says nothing).
     std::unique_ptr<ContactSolver> probe_solver;
     MPI_Comm                       comm;
     MPI_Comm                       reduced_ranks     = MPI_COMM_NULL;
