@@ -195,13 +195,17 @@ namespace FuzzyContact
     solver_name = solver->name();
     {
       // A probe that does not converge quickly says nothing: 50
-      // iterations from the warm start, then from the load path, and no
-      // last resorts (in a pin study they answered none of 1236 failed
+      // iterations from the warm start, then from the load path, and the
+      // last resorts (one solve on the friction path) only if no probe
+      // answers so (in a pin study they answered none of 1236 failed
       // probes and made half of each one's cost).
       ActiveSetParameters probe = settings.exact;
       probe.max_iterations      = std::min(probe.max_iterations, 50u);
+      probe.max_path_solves     = 1;
       probe.last_resorts        = false;
-      probe_solver              = std::make_unique<ActiveSetSolver>(probe);
+      probe_solvers[0]          = std::make_unique<ActiveSetSolver>(probe);
+      probe.last_resorts        = true;
+      probe_solvers[1]          = std::make_unique<ActiveSetSolver>(probe);
     }
     reduced_model->set_contact_solver(std::move(solver),
                                       solver_name == "fl2c" ? "FL2C"

@@ -156,29 +156,40 @@ namespace FuzzyContact
   FuzzyContactModel::sliding_with_more_friction(
     const std::vector<double> &values)
   {
-    // The probes (sliding_probes.h) by the probe solver.
-    const SceneState     at = state(values);
-    const SlidingVerdict verdict =
-      probe_sliding(sliding_probe_factors(sliding_probes, max_sliding_probe),
-                    [&](const double factor) {
-                      SceneState more = at;
-                      for (double &mu : more.friction_coefficients)
-                        mu *= factor;
-                      reduced_model->set_state(more);
-                      try
-                        {
-                          reduced_model->solve(*probe_solver);
-                          return 1;
-                        }
-                      catch (const ExcBeyondSmallSliding &)
-                        {
-                          return -1;
-                        }
-                      catch (const ExceptionBase &)
-                        {
-                          return 0;
-                        }
-                    });
+    // The probes (sliding_probes.h) by the quick probe solver; if none
+    // answers (the failure would be an error), again with the last
+    // resorts (one solve on the path of friction coefficients).
+    const SceneState at    = state(values);
+    const auto       probe = [&](const ContactSolver &solver) {
+      return probe_sliding(sliding_probe_factors(sliding_probes,
+                                                 max_sliding_probe),
+                           [&](const double factor) {
+                             SceneState more = at;
+                             for (double &mu : more.friction_coefficients)
+                               mu *= factor;
+                             reduced_model->set_state(more);
+                             try
+                               {
+                                 reduced_model->solve(solver);
+                                 return 1;
+                               }
+                             catch (const ExcBeyondSmallSliding &)
+                               {
+                                 return -1;
+                               }
+                             catch (const ExceptionBase &)
+                               {
+                                 return 0;
+                               }
+                           });
+    };
+    SlidingVerdict verdict = probe(*probe_solvers[0]);
+    if (verdict.kind == SlidingVerdict::none)
+      {
+        unanswered_.probes += verdict.probes;
+        unanswered_.failed_probes += verdict.failed;
+        verdict = probe(*probe_solvers[1]);
+      }
     unanswered_.probes += verdict.probes;
     unanswered_.failed_probes += verdict.failed;
     reduced_model->set_state(at);

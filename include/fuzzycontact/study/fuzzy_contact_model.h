@@ -56,6 +56,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <string>
@@ -475,15 +476,16 @@ namespace FuzzyContact
     std::vector<std::string> inert_parameters;
     std::string              held_by_contact;
     UnansweredEvaluations    unanswered_;
-    // The exact reduced solver of sliding_with_more_friction(): the
-    // study's settings with fewer iterations and without the last
-    // resorts (a probe that does not converge quickly says nothing).
-    std::unique_ptr<ContactSolver> probe_solver;
-    MPI_Comm                       comm;
-    MPI_Comm                       reduced_ranks     = MPI_COMM_NULL;
-    bool                           own_reduced_ranks = false;
-    std::vector<unsigned int>      builder; // the rank of each component
-    unsigned int                   n_ranks_building = 1;
+    // The exact reduced solvers of sliding_with_more_friction(): the
+    // study's settings with fewer iterations, without the last resorts
+    // (a probe that does not converge quickly says nothing), then with
+    // them and one path solve (if no probe answered).
+    std::array<std::unique_ptr<ContactSolver>, 2> probe_solvers;
+    MPI_Comm                                      comm;
+    MPI_Comm                                      reduced_ranks = MPI_COMM_NULL;
+    bool                                          own_reduced_ranks = false;
+    std::vector<unsigned int> builder; // the rank of each component
+    unsigned int              n_ranks_building = 1;
   };
 } // namespace FuzzyContact
 

@@ -14,7 +14,8 @@
 //    equilibrium);
 //  - within it: the point's failure lies below the friction that holds the
 //    bodies within small sliding (it is left out, with a warning);
-//  - none: the failure is the solver's.
+//  - none: the failure is the solver's (the study first probes again with
+//    a more thorough solver).
 //
 // A probe that fails costs what the probe solver's iteration limits allow
 // (30 ms each in a pin study, scene pin.prm), an answer far less (0.1-4
