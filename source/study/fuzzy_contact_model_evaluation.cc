@@ -58,8 +58,11 @@ namespace FuzzyContact
           }
         catch (const ExceptionBase &)
           {
-            // A solve that fails is the evaluations' to count or report,
-            // unless more friction slides beyond small sliding already.
+            // A solve that fails at or near the limit is the evaluations'
+            // to count or report; farther from it, the probes with more
+            // friction decide as for an evaluation: an answer beyond small
+            // sliding, or one within it where the point's own failed (the
+            // evaluations leave such a point out), makes it infeasible.
             if (!at_limit_of_equilibrium(near_limit_margin))
               feasible =
                 sliding_with_more_friction(values).kind == SlidingVerdict::none;
