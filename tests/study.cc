@@ -746,7 +746,8 @@ TEST(FloatingBodies, TwoStackedBodiesNearTheLimitOfSliding)
 // The key `Exact contact solver/max path solves` bounds that path: on the
 // same scene at mu = 0.2001 (which needs 12 solves on it), a limit of 3
 // makes the full-order solve fail with a message that gives the limit,
-// and the key refuses a limit below 1 naming itself.
+// and the key refuses a limit below 1 naming itself. Without the last
+// resorts (ActiveSetParameters::last_resorts) the path is not taken.
 TEST(FloatingBodies, ThePathOfFrictionCoefficientsHasAKey)
 {
   const Scene         s = bearing("0.2001");
@@ -767,6 +768,26 @@ TEST(FloatingBodies, ThePathOfFrictionCoefficientsHasAKey)
     }
   EXPECT_NE(message.find("3 solve(s) of at most 3"), std::string::npos)
     << message;
+
+  // Without the last resorts (as a fuzzy study's probes of a failed point
+  // solve) the solve stops after the load path's attempt: it fails where
+  // the path answers (TwoStackedBodiesNearTheLimitOfSliding), with the
+  // attempt's own message.
+  ActiveSetParameters quick;
+  quick.last_resorts = false;
+  FullOrderModel probe(bodies, outputs.dofs(), quick);
+  probe.set_state(SceneState(s));
+  message.clear();
+  try
+    {
+      probe.solve();
+    }
+  catch (const ExceptionBase &e)
+    {
+      message = Input::message_of(e);
+    }
+  EXPECT_FALSE(message.empty());
+  EXPECT_EQ(message.find("solve(s) of at most"), std::string::npos) << message;
 
   ParameterHandler prm;
   ActiveSetParameters::declare_parameters(prm);
