@@ -162,39 +162,39 @@ namespace FuzzyContact
     // The probes (sliding_probes.h) by the quick probe solver; if none
     // answers (the failure would be an error), again with the last
     // resorts (one solve on the path of friction coefficients).
-    const SceneState at    = state(values);
-    const auto       probe = [&](const ContactSolver &solver) {
-      return probe_sliding(sliding_probe_factors(sliding_probes,
-                                                 max_sliding_probe),
-                           [&](const double factor) {
-                             SceneState more = at;
-                             for (double &mu : more.friction_coefficients)
-                               mu *= factor;
-                             reduced_model->set_state(more);
-                             try
-                               {
-                                 reduced_model->solve(solver);
-                                 return 1;
-                               }
-                             catch (const ExcBeyondSmallSliding &)
-                               {
-                                 return -1;
-                               }
-                             catch (const ExceptionBase &)
-                               {
-                                 return 0;
-                               }
-                           });
+    const SceneState at = state(values);
+    const auto answer = [&](const ContactSolver &solver, const double factor) {
+      SceneState more = at;
+      for (double &mu : more.friction_coefficients)
+        mu *= factor;
+      reduced_model->set_state(more);
+      try
+        {
+          reduced_model->solve(solver);
+          return 1;
+        }
+      catch (const ExcBeyondSmallSliding &)
+        {
+          return -1;
+        }
+      catch (const ExceptionBase &)
+        {
+          return 0;
+        }
+    };
+    const auto probe = [&](const ContactSolver &solver) {
+      const SlidingVerdict verdict =
+        probe_sliding(sliding_probe_factors(sliding_probes, max_sliding_probe),
+                      [&](const double factor) {
+                        return answer(solver, factor);
+                      });
+      unanswered_.probes += verdict.probes;
+      unanswered_.failed_probes += verdict.failed;
+      return verdict;
     };
     SlidingVerdict verdict = probe(*probe_solvers[0]);
     if (verdict.kind == SlidingVerdict::none)
-      {
-        unanswered_.probes += verdict.probes;
-        unanswered_.failed_probes += verdict.failed;
-        verdict = probe(*probe_solvers[1]);
-      }
-    unanswered_.probes += verdict.probes;
-    unanswered_.failed_probes += verdict.failed;
+      verdict = probe(*probe_solvers[1]);
     reduced_model->set_state(at);
     return verdict;
   }
