@@ -198,7 +198,7 @@ namespace FuzzyContact
       // iterations from the warm start, then from the load path, and the
       // last resorts (one solve on the friction path) only if no probe
       // answers so (in a pin study they answered none of 1236 failed
-      // probes and made half of each one's cost).
+      // probes and were two of the up to four attempts each made).
       ActiveSetParameters probe = settings.exact;
       probe.max_iterations      = std::min(probe.max_iterations, 50u);
       probe.max_path_solves     = 1;
