@@ -1067,7 +1067,8 @@ TEST(RowUpdatedLU, EstimatesTheConditionAsLapackDoes)
 // factorisation copies the symbolic analysis of the first (counted) and must
 // give the same bits as a factorisation analysed afresh; a pattern with
 // other DoFs ordered last gets an analysis of its own (its trailing DoFs are
-// those). The multi-column solve agrees with single solves to round-off.
+// those). The multi-column solve agrees with single solves to round-off,
+// over several of its calls of CHOLMOD.
 TEST(SparseCholesky, SharesTheAnalysisOfOnePatternAndSolvesManyColumns)
 {
   const Scene scene = three_zone_scene("left");
@@ -1120,20 +1121,26 @@ TEST(SparseCholesky, SharesTheAnalysisOfOnePatternAndSolvesManyColumns)
   w -= u;
   EXPECT_LT(w.linfty_norm(), 1e-8 * u.linfty_norm());
 
-  // Three columns at once.
-  std::vector<double> columns(3 * n);
-  for (unsigned int j = 0; j < 3; ++j)
+  // 131 columns at once: CHOLMOD solves up to 64 a call (its workspace
+  // stays that small), so two full blocks and a remainder of three.
+  const unsigned int  b = 131;
+  std::vector<double> columns(std::size_t(b) * n);
+  for (unsigned int j = 0; j < b; ++j)
     for (unsigned int i = 0; i < n; ++i)
-      columns[j * n + i] = std::sin(0.3 * (j + 1) * i);
+      columns[std::size_t(j) * n + i] = std::sin(0.3 * (j + 1) * i);
   std::vector<double> single = columns;
-  again.solve(columns.data(), 3);
-  for (unsigned int j = 0; j < 3; ++j)
+  again.solve(columns.data(), b);
+  for (unsigned int j = 0; j < b; ++j)
     {
-      dealii::Vector<double> x(single.begin() + j * n,
-                               single.begin() + (j + 1) * n);
+      dealii::Vector<double> x(single.begin() + std::size_t(j) * n,
+                               single.begin() + std::size_t(j + 1) * n);
       again.solve(x);
+      double difference = 0;
       for (unsigned int i = 0; i < n; ++i)
-        EXPECT_NEAR(columns[j * n + i], x[i], 1e-13 * x.linfty_norm());
+        difference = std::max(difference,
+                              std::abs(columns[std::size_t(j) * n + i] - x[i]));
+      // (blocks of columns take other BLAS paths than one column: round-off)
+      EXPECT_LE(difference, 1e-12 * x.linfty_norm()) << "column " << j;
     }
 }
 

@@ -20,23 +20,33 @@ namespace FuzzyContact
 {
   namespace ZoneCorrectionAlgebra
   {
+    // X := M X, one column at a time.
+    void
+    sparse_product_in_place(const SparseMatrix<double> &M,
+                            Block                      &X,
+                            const unsigned int          b)
+    {
+      const unsigned int n = M.n();
+      AssertDimension(M.m(), n);
+      AssertDimension(X.size(), std::size_t(n) * b);
+      Vector<double> x(n), y(n);
+      for (unsigned int j = 0; j < b; ++j)
+        {
+          double *column = X.data() + std::size_t(j) * n;
+          std::copy(column, column + n, x.begin());
+          M.vmult(y, x);
+          std::copy(y.begin(), y.end(), column);
+        }
+    }
+
     // M X for a sparse M and a column-major block X with b columns.
     Block
     sparse_product(const SparseMatrix<double> &M,
                    const Block                &X,
                    const unsigned int          b)
     {
-      const unsigned int n = M.n();
-      Block              Y(std::size_t(n) * b);
-      Vector<double>     x(n), y(n);
-      for (unsigned int j = 0; j < b; ++j)
-        {
-          std::copy(X.begin() + std::size_t(j) * n,
-                    X.begin() + std::size_t(j + 1) * n,
-                    x.begin());
-          M.vmult(y, x);
-          std::copy(y.begin(), y.end(), Y.begin() + std::size_t(j) * n);
-        }
+      Block Y = X;
+      sparse_product_in_place(M, Y, b);
       return Y;
     }
 
@@ -296,7 +306,7 @@ namespace FuzzyContact
         for (unsigned int p = 0; p < n_p; ++p)
           {
             Block Y = d.psi_times(Omega);
-            Y       = sparse_product(d.model.stiffness_derivative(p), Y, l);
+            sparse_product_in_place(d.model.stiffness_derivative(p), Y, l);
             d.solve(Y, l);
             const FullMatrix<double> MO = d.psi_products(Y, l); // n_s x l
             if (all)
@@ -325,10 +335,11 @@ namespace FuzzyContact
                 if (F.n() > 0)
                   F.mTmult(M[p], F);
               }
-            const Block P = d.psi_times(MO);
-            for (std::size_t i = 0; i < Y.size(); ++i)
-              Y[i] -= P[i];
-            X.insert(X.end(), Y.begin(), Y.end());
+            d.subtract_psi_times(Y, l, MO);
+            if (X.empty())
+              X = std::move(Y);
+            else
+              X.insert(X.end(), Y.begin(), Y.end());
             b += l;
             X.insert(X.end(), mode_images[p].begin(), mode_images[p].end());
             b += mode_images[p].size() / d.n;

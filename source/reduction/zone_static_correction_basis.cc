@@ -97,34 +97,51 @@ namespace FuzzyContact
   }
 
 
+  FullMatrix<double>
+  ZoneStaticCorrection::Data::energy_products(const double      *A,
+                                              const unsigned int a,
+                                              const Block       &X,
+                                              const unsigned int b) const
+  {
+    const SparseMatrix<double> &K0 = model.nominal_stiffness();
+    FullMatrix<double>          G(a, b);
+    for (unsigned int first = 0; first < b; first += chunk_columns)
+      {
+        const unsigned int m = std::min(chunk_columns, b - first);
+        Block              KX(X.begin() + std::size_t(first) * n,
+                 X.begin() + std::size_t(first + m) * n);
+        sparse_product_in_place(K0, KX, m);
+        const FullMatrix<double> Gc = transpose_product(A, a, KX.data(), m, n);
+        for (unsigned int i = 0; i < a; ++i)
+          for (unsigned int j = 0; j < m; ++j)
+            G(i, first + j) = Gc(i, j);
+      }
+    return G;
+  }
+
+
   Block
   ZoneStaticCorrection::Data::add_block(Block              X,
                                         const unsigned int b,
                                         const double       threshold)
   {
-    const SparseMatrix<double> &K0 = model.nominal_stiffness();
     if (b == 0)
       return {};
+    // (Products with K0 and Psi are made a chunk of columns at a time:
+    // X is the only block of all the candidates held.)
     for (unsigned int pass = 0; pass < 2; ++pass)
       {
         // Psi: X -= Psi (Psi^T K0 X), one back-substitution a column.
-        const FullMatrix<double> c = psi_products(X, b);
-        const Block              P = psi_times(c);
-        for (std::size_t i = 0; i < X.size(); ++i)
-          X[i] -= P[i];
+        subtract_psi_times(X, b, psi_products(X, b));
         // Z: X -= Z (Z^T K0 X).
         if (r > 0)
           {
-            const Block              KX = sparse_product(K0, X, b);
-            const FullMatrix<double> G =
-              transpose_product(Z.data(), r, KX.data(), b, n);
+            const FullMatrix<double> G = energy_products(Z.data(), r, X, b);
             add_product(X.data(), b, -1., Z.data(), r, G, n);
           }
       }
     // What is left: its Gram matrix and its principal directions.
-    Block              KX = sparse_product(K0, X, b);
-    FullMatrix<double> G  = transpose_product(X.data(), b, KX.data(), b, n);
-    KX.clear();
+    FullMatrix<double> G = energy_products(X.data(), b, X, b);
     symmetrise(G);
     const auto [values, vectors]      = eigen(G);
     const double              largest = values.empty() ? 0. : values.back();
@@ -143,13 +160,11 @@ namespace FuzzyContact
         S(i, j) = vectors(i, kept[j]) / std::sqrt(values[kept[j]]);
     Block N(std::size_t(n) * n_new, 0.);
     add_product(N.data(), n_new, 1., X.data(), b, S, n);
-    X.clear();
+    Block().swap(X);
     // Once more within itself, so that N^T K0 N = I to round-off: N := N
     // L^{-T} with N^T K0 N = L L^T.
     {
-      const Block        KN = sparse_product(K0, N, n_new);
-      FullMatrix<double> G2 =
-        transpose_product(N.data(), n_new, KN.data(), n_new, n);
+      FullMatrix<double> G2 = energy_products(N.data(), n_new, N, n_new);
       symmetrise(G2);
       const FullMatrix<double> L = cholesky(G2, "Krylov static correction");
       FullMatrix<double>       Zt(n_new, n_new); // column-major L^{-T}

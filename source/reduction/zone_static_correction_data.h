@@ -17,6 +17,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <utility>
@@ -32,11 +33,22 @@ namespace FuzzyContact
     // FullMatrix is row-major: its data is the column-major transpose.
     using Block = std::vector<double>;
 
-    // M X for a sparse M and a column-major block X with b columns.
+    // M X for a sparse M and a column-major block X with b columns; and
+    // X := M X in place (a vector's worth of memory more, not a block's).
     Block
     sparse_product(const SparseMatrix<double> &M,
                    const Block                &X,
                    const unsigned int          b);
+    void
+    sparse_product_in_place(const SparseMatrix<double> &M,
+                            Block                      &X,
+                            const unsigned int          b);
+
+    // Blocks of full-length vectors are worked on this many columns at a
+    // time where a product with a sparse matrix or Psi would otherwise
+    // make a second block of all the columns: on a large mesh one block is
+    // gigabytes (966 columns of 371,522 DoFs: 2.9 GB).
+    constexpr unsigned int chunk_columns = 64;
 
     // A := (A + A^T) / 2 for a square A.
     void
@@ -169,6 +181,32 @@ namespace FuzzyContact
       solve(X, b);
       return X;
     }
+
+    // X -= Psi c (X with b columns, c row-major n_s x b), Psi c made
+    // chunk_columns columns at a time.
+    void
+    subtract_psi_times(Block                    &X,
+                       const unsigned int        b,
+                       const FullMatrix<double> &c)
+    {
+      AssertDimension(c.n(), b);
+      for (unsigned int first = 0; first < b; first += chunk_columns)
+        {
+          const unsigned int m = std::min(chunk_columns, b - first);
+          const Block        P = psi_times(columns(c, first, m));
+          double            *x = X.data() + std::size_t(first) * n;
+          for (std::size_t i = 0; i < P.size(); ++i)
+            x[i] -= P[i];
+        }
+    }
+
+    // A^T K0 X (row-major a x b) for column-major blocks A (a columns) and
+    // X (b columns), K0 X made chunk_columns columns at a time.
+    FullMatrix<double>
+    energy_products(const double      *A,
+                    const unsigned int a,
+                    const Block       &X,
+                    const unsigned int b) const;
 
     // Psi^T K0 X = F_B^T X_B (no back-substitution): n_s x b.
     FullMatrix<double>

@@ -71,9 +71,10 @@ namespace FuzzyContact
     vmult(Vector<double> &dst, const Vector<double> &src) const;
     /**
      * Overwrites the @p n_columns vectors of length n() stored one after
-     * the other from @p columns by A^{-1} times them, in one call of
-     * CHOLMOD (its supernodal substitutions then work on blocks of
-     * columns: cheaper per column than one solve() each).
+     * the other from @p columns by A^{-1} times them, in calls of CHOLMOD
+     * on up to 64 columns each (its supernodal substitutions then work on
+     * blocks of columns: cheaper per column than one solve() each; its
+     * workspace, kept between solves, is of that many vectors).
      */
     void
     solve(double *columns, const unsigned int n_columns) const;
