@@ -102,6 +102,18 @@ namespace FuzzyContact
     }
 
 
+    void
+    note(const std::string &what)
+    {
+      const double t = stage_timer().wall_time();
+      if (!enabled() || t - last_stage_line < stage_interval)
+        return;
+      last_stage_line = t;
+      std::cerr << "  ... " << what << ", " << seconds(t) << " elapsed"
+                << std::endl;
+    }
+
+
     std::string
     line(const std::string &what,
          const unsigned int done,

@@ -4,6 +4,7 @@
 // active and inert parts: zone_static_correction_split.cc.
 
 #include <fuzzycontact/base/lapack_errors.h>
+#include <fuzzycontact/base/progress.h>
 #include <fuzzycontact/base/timer_section.h>
 
 #include <deal.II/base/exceptions.h>
@@ -251,6 +252,11 @@ namespace FuzzyContact
           auto [W, g] = d.exact(t);
           d.exact_W.push_back(std::move(W));
           d.exact_g.push_back(std::move(g));
+          ProgressLines::stage("exact contact flexibility of " +
+                                 component.name() +
+                                 " at a corner of the fuzzy box",
+                               d.exact_W.size(),
+                               d.corners.size());
         }
       d.check.n_corners = d.corners.size();
     }
@@ -344,6 +350,11 @@ namespace FuzzyContact
             X.insert(X.end(), mode_images[p].begin(), mode_images[p].end());
             b += mode_images[p].size() / d.n;
           }
+        ProgressLines::note("Krylov static correction of " + component.name() +
+                            ": " + std::to_string(l) +
+                            " probes of its static correction, " +
+                            std::to_string(d.check.back_substitutions) +
+                            " back-substitutions so far");
         if (!enough)
           continue;
         // A_k = [M, Psi^T K_k T; ., T^T K_k T] so far.
@@ -369,6 +380,15 @@ namespace FuzzyContact
         d.check.degree           = 1;
         std::vector<Block> level = d.extend(first);
         d.measure(timer);
+        // (On a large mesh a level takes minutes.)
+        const auto say_level = [&](const unsigned int degree) {
+          ProgressLines::note(
+            "Krylov static correction of " + component.name() + ": level " +
+            std::to_string(degree) + " from " + std::to_string(l) +
+            " probes, " + std::to_string(d.check.back_substitutions) +
+            " back-substitutions so far");
+        };
+        say_level(1);
         for (unsigned int degree = 2; degree <= settings.max_degree &&
                                       !d.check.tolerance_met && d.r > first;
              ++degree)
@@ -390,6 +410,7 @@ namespace FuzzyContact
             d.check.degree   = degree;
             level            = d.extend(first);
             d.measure(timer);
+            say_level(degree);
           }
         d.check.probes = l;
         if (d.check.tolerance_met || all)

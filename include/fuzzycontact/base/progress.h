@@ -61,6 +61,14 @@ namespace FuzzyContact
           const unsigned int total);
 
     /**
+     * Says @p what of a stage whose length is not known beforehand (an
+     * adaptive loop: "Krylov static correction of Plate: level 2, ..."),
+     * under the same rule as stage(): "  ... <what>, 31 s elapsed".
+     */
+    void
+    note(const std::string &what);
+
+    /**
      * The text of a counting line: "<what>: 120/641 (18 %), 3.1 s elapsed,
      * about 14 s left" (no estimate when nothing or everything is done).
      */
