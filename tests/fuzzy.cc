@@ -2025,3 +2025,35 @@ TEST(FuzzyStudyReport, ABoundShortOfTheReferenceIsAWarning)
             std::string::npos)
     << out.str();
 }
+
+// A bound beyond the Extension Principle's interval only by the reduction
+// error (the exact value at its argument is not beyond it) is said to be;
+// for a crisp output, whose range is round-off, the report adds that the
+// excess is within the output's accuracy, and only then.
+TEST(FuzzyStudyReport, BeyondTheReferenceOnlyByRoundOffIsSaidToBe)
+{
+  for (const double scale : {1e-9, 1.})
+    {
+      // Upper bound 1e5 + 6 scale (reduced; exact there 1e5 + 3 scale)
+      // against a sampled 1e5 + 4 scale.
+      FuzzyStudyResults r = one_output_results(Interval{1e5, 1e5 + 6 * scale},
+                                               Interval{1e5, 1e5 + 4 * scale});
+      r.proofs.upper      = {{BoundProof{1e5 + 6 * scale, 1e5 + 3 * scale}}};
+      std::ostringstream out;
+      nlohmann::json     entry;
+      FuzzyStudyReport::comparison(r, 0, out, entry);
+      ASSERT_NE(out.str().find("1 bound(s) lie beyond the Extension "
+                               "Principle's interval only by the reduction "
+                               "error"),
+                std::string::npos)
+        << out.str();
+      const bool        round_off = scale < 1e-3;
+      const std::string text      = out.str();
+      const std::size_t at        = text.find("only by the reduction error");
+      const std::string line      = text.substr(at, text.find('\n', at) - at);
+      EXPECT_EQ(line.find("within its accuracy, 1.0e-07 of its magnitude "
+                          "1.000e+05, so round-off") != std::string::npos,
+                round_off)
+        << out.str();
+    }
+}

@@ -356,10 +356,20 @@ namespace FuzzyContact
             << " (a sampled reference can only under-estimate an "
                "interval)\n";
       if (n_unverified > 0)
-        out << "  " << n_unverified << " bound(s) lie beyond the Extension "
-            << "Principle's interval only by the reduction error (the exact "
-               "value at the argument does not), by up to "
-            << sci(unverified) << "\n";
+        {
+          out << "  " << n_unverified << " bound(s) lie beyond the Extension "
+              << "Principle's interval only by the reduction error (the exact "
+                 "value at the argument does not), by up to "
+              << sci(unverified);
+          // (As for the shortfall: within the output's accuracy, a
+          // reduction error of round-off.)
+          if (unverified * range <= allowed)
+            out << " (" << sci(unverified * range)
+                << " in the output's units: within its accuracy, "
+                << sci(r.proof_settings.accuracy) << " of its magnitude "
+                << sci(magnitude, 3) << ", so round-off)";
+          out << "\n";
+        }
       if (!short_bounds.empty())
         {
           out << "warning: " << r.outputs[k].name << ": " << short_bounds.size()
