@@ -1247,6 +1247,31 @@ TEST(FuzzyContactModel, AFailedEvaluationNamesThePointAndTheKeys)
   EXPECT_NE(message.find("subsection FL2C"), std::string::npos) << message;
 }
 
+// The model's description says how often each body's mesh was refined
+// (a mesh file is refined by the key's default too) and into how many
+// cells: a refinement makes four of every cell.
+TEST(FuzzyContactModel, TheDescriptionSaysHowOftenTheMeshWasRefined)
+{
+  const Scene             scene = Scene::read(source_dir + "/prm/overlap.prm");
+  const FuzzyParameterSet set   = fuzzy_parameters(scene, default_study);
+  FuzzyContactModelSettings settings = coarse_settings();
+  const FuzzyContactModel   coarse(scene, set, default_outputs, settings);
+  settings.mesh_refinements = 1;
+  const FuzzyContactModel refined(scene, set, default_outputs, settings);
+  EXPECT_EQ(coarse.describe().find("refined"), std::string::npos)
+    << coarse.describe();
+  const Component    unrefined(scene.components[0], scene.plane_model, 0);
+  const unsigned int cells = unrefined.triangulation().n_active_cells();
+  EXPECT_NE(refined.describe().find(
+              scene.components[0].name + ": " +
+              std::to_string(
+                Component(scene.components[0], scene.plane_model, 1).n_dofs()) +
+              " DoFs (" + std::to_string(4 * cells) +
+              " cells: its mesh refined 1 time(s), key 'mesh refinements')"),
+            std::string::npos)
+    << refined.describe();
+}
+
 // Moduli of whole bodies and loads only: the study needs no modes (the
 // static correction alone is exact), skips the modal analysis and says so;
 // with the modes forced the answers are the same to the solver accuracy.

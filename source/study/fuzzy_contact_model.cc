@@ -22,8 +22,10 @@ namespace FuzzyContact
     prm.declare_entry("mesh refinements",
                       "2",
                       Patterns::Integer(0, 6),
-                      "Global refinements of every component mesh (2: "
-                      "about 20k DoFs per component in the default scenes).");
+                      "Global refinements of every component mesh, a mesh "
+                      "file's too: each makes four cells of every cell (2: "
+                      "about 20k DoFs per component in the default scenes; "
+                      "a Gmsh mesh sized for its contact wants 0).");
     prm.declare_entry("contact solver",
                       "fl2c",
                       Patterns::Selection(contact_solver_names()),

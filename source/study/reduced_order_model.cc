@@ -441,9 +441,19 @@ namespace FuzzyContact
     std::ostringstream out;
     for (unsigned int c = 0; c < models.size(); ++c)
       {
-        const ComponentModel &m = *models[c];
-        out << "  " << bodies.component(c).name() << ": "
-            << bodies.component(c).n_dofs() << " DoFs, ";
+        const ComponentModel &m         = *models[c];
+        const Component      &component = bodies.component(c);
+        out << "  " << component.name() << ": " << component.n_dofs()
+            << " DoFs";
+        // (A mesh file refined by the default of the key: its cells are
+        // 4^r of the file's, which a user should see.)
+        const unsigned int refinements =
+          component.triangulation().n_levels() - 1;
+        if (refinements > 0)
+          out << " (" << component.triangulation().n_active_cells()
+              << " cells: its mesh refined " << refinements
+              << " time(s), key 'mesh refinements')";
+        out << ", ";
         if (m.n_modes == 0)
           out << "no modes, ";
         else
