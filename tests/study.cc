@@ -633,6 +633,35 @@ TEST(FloatingBodies, BlockOnASlopeAgainstStatics)
     }
 }
 
+// The shoe of prm/shoe.prm, held by contact alone, pressed (60 kN/m),
+// pushed east (8 kN/m) and pushed back west (16 kN/m) in three load
+// stages of 2, 3 and 3 steps: at the end the contact forces balance the
+// loads (statics: F_n = 60 kN/m, F_t = +8 kN/m, the pair's sign for a net
+// push of 8 kN/m west, whatever the friction did on the way), and the
+// exact reduced solver agrees with the full-order one at the shoe's
+// crown, after the load reversal.
+TEST(FloatingBodies, AShoePushedAndPushedBackAgainstStatics)
+{
+  const Scene s = Scene::read(source_dir + "/prm/shoe.prm");
+  const auto  v = three_ways(s,
+                            {"shoe-on-plate.Fn",
+                              "shoe-on-plate.Ft",
+                              "Shoe.node(0.06, 0.042).ux",
+                              "Shoe.node(0.06, 0.042).uy"},
+                            false);
+  for (const auto &w : v)
+    {
+      EXPECT_NEAR(w[0], 6e4, 1e-10 * 6e4);
+      EXPECT_NEAR(w[1], 8e3, 1e-10 * 6e4);
+      for (const unsigned int i : {2u, 3u})
+        EXPECT_NEAR(w[i], v[0][i], 1e-8 * std::abs(v[0][i]));
+    }
+  // The push back moved the crown west of where the press left it (u_x <
+  // 0 at the end), and the press moved it down.
+  EXPECT_LT(v[0][2], 0.);
+  EXPECT_LT(v[0][3], 0.);
+}
+
 // The contact patch test (prm/patch-test.prm, matching meshes) with the
 // upper block pressed by a pressure p on its top instead of a prescribed
 // displacement: held in x by its symmetry line only, it floats vertically.
