@@ -6,6 +6,7 @@
 #include <iomanip>
 #include <iostream>
 #include <sstream>
+#include <string>
 #include <unistd.h>
 
 namespace FuzzyContact
@@ -93,12 +94,8 @@ namespace FuzzyContact
           const unsigned int done,
           const unsigned int total)
     {
-      const double t = stage_timer().wall_time();
-      if (!enabled() || t - last_stage_line < stage_interval)
-        return;
-      last_stage_line = t;
-      std::cerr << "  ... " << what << " (" << done << "/" << total << "), "
-                << seconds(t) << " elapsed" << std::endl;
+      note(what + " (" + std::to_string(done) + "/" + std::to_string(total) +
+           ")");
     }
 
 

@@ -342,11 +342,15 @@ namespace FuzzyContact
       // A shortfall above the tolerance of the range but within the
       // output's accuracy (a range of round-off) is said to be round-off,
       // not left to read as a miss.
+      // (The same words for a reduction error of that size, below.)
+      const auto round_off = [&](const double relative) {
+        return " (" + sci(relative * range) +
+               " in the output's units: within its accuracy, " +
+               sci(r.proof_settings.accuracy) + " of its magnitude " +
+               sci(magnitude, 3) + ", so round-off)";
+      };
       if (short_of > r.proof_settings.tolerance && short_bounds.empty())
-        out << " (" << sci(short_of * range)
-            << " in the output's units: within its accuracy, "
-            << sci(r.proof_settings.accuracy) << " of its magnitude "
-            << sci(magnitude, 3) << ", so round-off)";
+        out << round_off(short_of);
       out << "\n";
       if (n_missed > 0)
         out << "  " << n_missed << " bound(s) lie beyond the Extension "
@@ -364,10 +368,7 @@ namespace FuzzyContact
           // (As for the shortfall: within the output's accuracy, a
           // reduction error of round-off.)
           if (unverified * range <= allowed)
-            out << " (" << sci(unverified * range)
-                << " in the output's units: within its accuracy, "
-                << sci(r.proof_settings.accuracy) << " of its magnitude "
-                << sci(magnitude, 3) << ", so round-off)";
+            out << round_off(unverified);
           out << "\n";
         }
       if (!short_bounds.empty())

@@ -182,12 +182,13 @@ namespace FuzzyContact
           return 0;
         }
     };
+    static const std::vector<double> factors =
+      sliding_probe_factors(sliding_probes, max_sliding_probe);
     const auto probe = [&](const ContactSolver &solver) {
       const SlidingVerdict verdict =
-        probe_sliding(sliding_probe_factors(sliding_probes, max_sliding_probe),
-                      [&](const double factor) {
-                        return answer(solver, factor);
-                      });
+        probe_sliding(factors, [&](const double factor) {
+          return answer(solver, factor);
+        });
       unanswered_.probes += verdict.probes;
       unanswered_.failed_probes += verdict.failed;
       return verdict;
@@ -307,15 +308,23 @@ namespace FuzzyContact
   FuzzyContactModel::UnansweredEvaluations::summed_over(
     const MPI_Comm comm) const
   {
+    // (One reduction for the six counts.)
+    const std::vector<unsigned long> counts = {at_limit,
+                                               unsolved_near_limit,
+                                               beyond_small_sliding,
+                                               unsolved_below_sliding_limit,
+                                               probes,
+                                               failed_probes};
+    std::vector<unsigned long>       sums(counts.size());
+    Utilities::MPI::sum(counts, comm, sums);
     UnansweredEvaluations sum;
-    sum.at_limit             = Utilities::MPI::sum(at_limit, comm);
-    sum.unsolved_near_limit  = Utilities::MPI::sum(unsolved_near_limit, comm);
-    sum.beyond_small_sliding = Utilities::MPI::sum(beyond_small_sliding, comm);
-    sum.unsolved_below_sliding_limit =
-      Utilities::MPI::sum(unsolved_below_sliding_limit, comm);
+    sum.at_limit                     = sums[0];
+    sum.unsolved_near_limit          = sums[1];
+    sum.beyond_small_sliding         = sums[2];
+    sum.unsolved_below_sliding_limit = sums[3];
+    sum.probes                       = sums[4];
+    sum.failed_probes                = sums[5];
     sum.sliding_factor = Utilities::MPI::max(sliding_factor, comm);
-    sum.probes         = Utilities::MPI::sum(probes, comm);
-    sum.failed_probes  = Utilities::MPI::sum(failed_probes, comm);
     return sum;
   }
 
