@@ -1,11 +1,8 @@
-#include <fuzzycontact/base/mpi_wait.h>
+#include <fuzzycontact/base/rank_blocks.h>
 #include <fuzzycontact/fuzzy/bound_proof.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/timer.h>
-
-#include <boost/serialization/utility.hpp>
-#include <boost/serialization/vector.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -34,32 +31,17 @@ namespace FuzzyContact
         points.push_back(p);
       }
 
-    const bool parallel = Utilities::MPI::job_supports_mpi() &&
-                          Utilities::MPI::n_mpi_processes(comm) > 1;
-    const unsigned int size =
-      parallel ? Utilities::MPI::n_mpi_processes(comm) : 1;
-    const unsigned int rank =
-      parallel ? Utilities::MPI::this_mpi_process(comm) : 0;
-    std::vector<std::pair<unsigned long, std::vector<double>>> mine;
     // Each rank takes a contiguous block of the points (sorted): points
     // that share their stiffness follow each other, so an exact solver
     // that keeps its factorisation while the stiffness does not change
     // factorises as seldom as with one process.
-    for (unsigned long i = points.size() * rank / size;
-         i < points.size() * (rank + 1) / size;
-         ++i)
-      mine.emplace_back(i, exact(points[i]));
-    std::vector<std::vector<double>> values(points.size());
-    if (!parallel)
-      for (auto &[i, v] : mine)
-        values[i] = std::move(v);
-    else
-      {
-        wait_for_all_ranks(comm); // (unevenly long solves: without spinning)
-        for (auto &part : Utilities::MPI::all_gather(comm, mine))
-          for (auto &[i, v] : part)
-            values[i] = std::move(v);
-      }
+    const std::vector<std::vector<double>> values =
+      in_rank_blocks<std::vector<double>>(
+        points.size(),
+        [&](const std::size_t i) {
+          return exact(points[i]);
+        },
+        comm);
 
     BoundProofs        proofs;
     const unsigned int n_outputs = bounds.bounds.size();
@@ -78,7 +60,8 @@ namespace FuzzyContact
         }
     proofs.n_evaluations = points.size();
     proofs.wall_time     = timer.wall_time();
-    if (parallel)
+    if (Utilities::MPI::job_supports_mpi() &&
+        Utilities::MPI::n_mpi_processes(comm) > 1)
       proofs.wall_time = Utilities::MPI::max(proofs.wall_time, comm);
     return proofs;
   }

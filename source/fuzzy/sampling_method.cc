@@ -1,11 +1,8 @@
-#include <fuzzycontact/base/mpi_wait.h>
+#include <fuzzycontact/base/rank_blocks.h>
 #include <fuzzycontact/fuzzy/sampling_method.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/timer.h>
-
-#include <boost/serialization/utility.hpp>
-#include <boost/serialization/vector.hpp>
 
 #include <cmath>
 #include <limits>
@@ -25,13 +22,6 @@ namespace FuzzyContact
                : 1;
     }
 
-    unsigned int
-    this_rank(const MPI_Comm comm)
-    {
-      return Utilities::MPI::job_supports_mpi()
-               ? Utilities::MPI::this_mpi_process(comm)
-               : 0;
-    }
 
     // Evaluates the points assigned to this rank (a contiguous block, so
     // that neighbouring samples, which often share their stiffness and
@@ -42,24 +32,12 @@ namespace FuzzyContact
                          const Response                         &response,
                          const MPI_Comm                          comm)
     {
-      const unsigned int size = n_ranks(comm), rank = this_rank(comm);
-      std::vector<std::pair<unsigned long, std::vector<double>>> mine;
-      for (unsigned long i = points.size() * rank / size;
-           i < points.size() * (rank + 1) / size;
-           ++i)
-        mine.emplace_back(i, response(points[i]));
-      std::vector<std::vector<double>> outputs(points.size());
-      if (size == 1)
-        for (auto &[i, out] : mine)
-          outputs[i] = std::move(out);
-      else
-        {
-          wait_for_all_ranks(comm); // (unevenly long solves: no spinning)
-          for (auto &part : Utilities::MPI::all_gather(comm, mine))
-            for (auto &[i, out] : part)
-              outputs[i] = std::move(out);
-        }
-      return outputs;
+      return in_rank_blocks<std::vector<double>>(
+        points.size(),
+        [&](const std::size_t i) {
+          return response(points[i]);
+        },
+        comm);
     }
 
     // Min and max of each output over the points inside each box that
