@@ -11,6 +11,7 @@
 #include <fuzzycontact/fuzzy/global_stage.h>
 #include <fuzzycontact/fuzzy/optimisation_method.h>
 #include <fuzzycontact/fuzzy/proof_feedback.h>
+#include <fuzzycontact/fuzzy/spot_checks.h>
 #include <fuzzycontact/fuzzy/vertex_method.h>
 #include <fuzzycontact/scene/scene.h>
 #include <fuzzycontact/scene/scene_quantity.h>
@@ -2081,4 +2082,127 @@ TEST(FuzzyStudyReport, BeyondTheReferenceOnlyByRoundOffIsSaidToBe)
                 round_off)
         << out.str();
     }
+}
+
+// Spot checks (fuzzy/spot_checks.h): of 12 recorded evaluations of a fast
+// response, 4 evenly spread ones (the middles of four equal parts: the 2nd,
+// 5th, 8th and 11th) are solved by the exact response once more. The fast
+// response is the exact one, y = (x0 + x1, x0 x1), plus an error on the
+// second output that grows along the record (1e-3 times the evaluation's
+// index), with no solution where x0 < 0 (both) and where the fast one
+// alone says so at x0 = 5: the largest difference is the last checked
+// point's, 1e-3 * 10, the first output has none, the point of x0 = -1 is
+// without a solution on both sides and the one at x0 = 4 (fast: none)
+// disagrees.
+TEST(SpotChecks, ChecksEvenlySpreadEvaluationsAgainstTheExactResponse)
+{
+  const Response exact = [](const std::vector<double> &x) {
+    if (x[0] < 0)
+      return std::vector<double>();
+    return std::vector<double>{x[0] + x[1], x[0] * x[1]};
+  };
+  unsigned int   calls = 0;
+  const Response fast  = [&](const std::vector<double> &x) {
+    const double error = 1e-3 * calls++;
+    if (x[0] == 4)
+      return std::vector<double>();
+    std::vector<double> y = exact(x);
+    if (!y.empty())
+      y[1] += error;
+    return y;
+  };
+  EvaluationRecord record;
+  const Response   recorded = record.recording(fast);
+  // x0 of the 12 evaluations: the 2nd (index 1) is -1, the 5th (4) is 4.
+  const std::vector<double> x0 = {0, -1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11};
+  for (const double x : x0)
+    recorded({x, 2.});
+  ASSERT_EQ(record.evaluations().size(), 12u);
+  EXPECT_GE(record.evaluations()[3].seconds, 0.);
+  unsigned int   exact_calls = 0;
+  const Response counted     = [&](const std::vector<double> &x) {
+    ++exact_calls;
+    return exact(x);
+  };
+  const SpotChecks c = spot_check(record, 4, counted, MPI_COMM_SELF);
+  EXPECT_EQ(c.n_recorded, 12u);
+  EXPECT_EQ(c.n_checked, 4u);
+  EXPECT_EQ(exact_calls, 4u);
+  EXPECT_EQ(c.n_without_solution, 1u);
+  EXPECT_EQ(c.n_disagreeing, 1u);
+  ASSERT_EQ(c.disagreeing.size(), 1u);
+  EXPECT_EQ(c.disagreeing[0], (std::vector<double>{4., 2.}));
+  ASSERT_EQ(c.largest_difference.size(), 2u);
+  EXPECT_EQ(c.largest_difference[0], 0.);
+  EXPECT_NEAR(c.largest_difference[1], 1e-2, 1e-13);
+  EXPECT_EQ(c.argument[1], (std::vector<double>{10., 2.}));
+  EXPECT_GE(c.exact_seconds, 0.);
+  // More asked than recorded: every evaluation, once.
+  exact_calls = 0;
+  EXPECT_EQ(spot_check(record, 100, counted, MPI_COMM_SELF).n_checked, 12u);
+  EXPECT_EQ(exact_calls, 12u);
+  // After clear(), nothing to check.
+  record.clear();
+  EXPECT_EQ(spot_check(record, 4, counted, MPI_COMM_SELF).n_checked, 0u);
+}
+
+// The report of the spot checks: an output whose largest |reduced - exact|
+// exceeds the proofs' tolerance of its range is a warning line naming it
+// and flagged in results.json; within it, or within the accuracy of the
+// output's magnitude (round-off of a crisp output), none.
+TEST(FuzzyStudyReport, SpotChecksBeyondTheToleranceAreAWarning)
+{
+  for (const double difference : {1e-6, 1e-3, 5e-9})
+    {
+      // Fn over [1e5, 1e5 + 10] at alpha 0 (range 10), tolerance 1e-4 of
+      // it (1e-3), accuracy 1e-7 of the magnitude (1e-2).
+      FuzzyStudyResults r =
+        one_output_results(Interval{1e5, 1e5 + 10}, Interval{1e5, 1e5 + 10});
+      r.proof_settings.tolerance       = 1e-4;
+      r.proof_settings.accuracy        = 1e-13;
+      r.proof_settings.spot_checks     = 3;
+      r.has_spot_checks                = true;
+      r.spot_checks.n_recorded         = 30;
+      r.spot_checks.n_checked          = 3;
+      r.spot_checks.fast_seconds       = 3e-3;
+      r.spot_checks.exact_seconds      = 6e-2;
+      r.spot_checks.largest_difference = {difference * 10};
+      r.spot_checks.argument           = {{0.25}};
+      r.parameters.resize(1);
+      r.parameters[0].quantity.name = "P1.E";
+      Report         report;
+      nlohmann::json json;
+      FuzzyStudyReport::spot_checks(r, report, json);
+      const std::string text   = report.text();
+      const bool        beyond = difference > 1e-4;
+      EXPECT_EQ(text.find("warning: spot checks: Fn: reduced - exact reaches "
+                          "1.00e-02, 1.00e-03 of the output's range "
+                          "(tolerance 1.0e-04), at (P1.E = 0.25)") !=
+                  std::string::npos,
+                beyond)
+        << text;
+      EXPECT_EQ(text.find("warning:") != std::string::npos, beyond) << text;
+      EXPECT_EQ(json["spot_checks"]["all_within_tolerance"].get<bool>(),
+                !beyond);
+      EXPECT_EQ(
+        json["spot_checks"]["outputs"][0]["within_tolerance"].get<bool>(),
+        !beyond);
+      EXPECT_NE(text.find("one evaluation at these points: 1.000 ms reduced"),
+                std::string::npos)
+        << text;
+      EXPECT_NEAR(json["spot_checks"]["ratio"].get<double>(), 20., 1e-12);
+    }
+  // A crisp output: 1e-3 of its range of 1e-8 is round-off, within 1e-7 of
+  // its magnitude 1e5: no warning.
+  FuzzyStudyResults r =
+    one_output_results(Interval{1e5, 1e5 + 1e-8}, Interval{1e5, 1e5 + 1e-8});
+  r.proof_settings.tolerance       = 1e-4;
+  r.has_spot_checks                = true;
+  r.spot_checks.n_checked          = 1;
+  r.spot_checks.largest_difference = {1e-11};
+  r.spot_checks.argument           = {{}};
+  Report         report;
+  nlohmann::json json;
+  FuzzyStudyReport::spot_checks(r, report, json);
+  EXPECT_EQ(report.text().find("warning:"), std::string::npos) << report.text();
 }

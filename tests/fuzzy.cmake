@@ -16,8 +16,15 @@ set(step4_quick
   "-DEDIT3_FROM=set points per dimension = 4"
   "-DEDIT3_TO=set points per dimension = 3")
 
+# With 20 spot checks (the line 'accept unproven = false' replaced: it is
+# the default): the reduced model within the proofs' tolerance of the
+# exact one at 20 of the optimisation's points.
+set(step4_spot_checks
+  "-DEDIT7_FILE=step"
+  "-DEDIT7_FROM=set accept unproven   = false"
+  "-DEDIT7_TO=set spot checks       = 20")
 fuzzycontact_program_test(step-4.quick_run step-4 overlap
-  ${step4_quick}
+  ${step4_quick} ${step4_spot_checks}
   -DEXPECT=success
   -DJSON_CHECKS=${CMAKE_CURRENT_SOURCE_DIR}/check_step-4.cmake)
 
@@ -25,7 +32,8 @@ fuzzycontact_program_test(step-4.quick_run step-4 overlap
 # them) is made richer by the exact solutions at the unproven bounds'
 # arguments until every bound is proven (exit 0); with no rounds allowed
 # the run writes its results, warns per unproven bound, flags them in
-# results.json and exits with status 3.
+# results.json and exits with status 3; its spot checks find the poor
+# model beyond the tolerance away from the bounds too.
 set(step4_poor_model
   "-DEDIT4_FILE=step"
   "-DEDIT4_FROM=set static correction = true"
@@ -38,7 +46,7 @@ fuzzycontact_program_test(step-4.proofs_correct_a_poor_model step-4 overlap
   -DEXPECT=success
   -DJSON_CHECKS=${CMAKE_CURRENT_SOURCE_DIR}/check_step-4_corrected.cmake)
 fuzzycontact_program_test(step-4.unproven_bounds_exit_status step-4 overlap
-  ${step4_quick} ${step4_poor_model}
+  ${step4_quick} ${step4_poor_model} ${step4_spot_checks}
   "-DEDIT6_FILE=step"
   "-DEDIT6_FROM=set max rounds        = 3"
   "-DEDIT6_TO=set max rounds        = 0"
@@ -158,9 +166,14 @@ step4_mpi_test(step-4.mpi_np2_same_as_np1 step-4.prm overlap.prm step-4-output
 # The same on the zone study: the re-analysed component P1 is built on the
 # first rank, which alone solves the reduced model; P2 on the second, which
 # assembles and factorises P1 too for its share of the proofs (each at new
-# zone moduli of P1), but the first never touches P2.
+# zone moduli of P1), but the first never touches P2. With 12 spot checks:
+# the first rank's evaluations gathered, the exact solves dealt to both.
 step4_mpi_test(step-4.zones_mpi_np2_same_as_np1 step-4-zones.prm overlap-zones.prm step-4-zones-output
   ${step4_quick}
+  "-DEDIT7_FILE=step"
+  "-DEDIT7_FROM=set accept unproven   = false"
+  "-DEDIT7_TO=set spot checks       = 12"
+  -DJSON_CHECKS=${CMAKE_CURRENT_SOURCE_DIR}/check_spot_checks.cmake
   "-DRANK_ASSEMBLED=P1|P1,P2"
   "-DRANK_FACTORISED=P1|P1,P2")
 

@@ -3,7 +3,7 @@
 #   cmake -DPROGRAM=<exe> -DPRM=<step .prm> -DSCENE=<scene .prm>
 #         -DWORKDIR=<folder> -DOUTPUT=<output folder name>
 #         [-DEDIT_FILE=step|scene -DEDIT_FROM=<text> -DEDIT_TO=<text>]
-#         [-DEDIT2_...] ... [-DEDIT6_...]  (the same, up to six)
+#         [-DEDIT2_...] ... [-DEDIT8_...]  (the same, up to eight)
 #         [-DEXTRA_FILES=<file>,<file>...]
 #         [-DLAUNCHER=<command>|<arg>|...]   (e.g. /usr/bin/mpiexec|-n|2)
 #         -DEXPECT=success|failure [-DMESSAGE=<regex>]
@@ -12,7 +12,7 @@
 #         -P run_program.cmake
 #
 # The step file and its scene are copied into WORKDIR (optionally with up
-# to six text replacements, to make a bad input out of a good one or a
+# to eight text replacements, to make a bad input out of a good one or a
 # quick run out of a long one), and so are EXTRA_FILES (unedited) for step
 # files that name more than one scene; the program runs there, behind
 # LAUNCHER if given. For
@@ -30,7 +30,7 @@ get_filename_component(prm_name "${PRM}" NAME)
 get_filename_component(scene_name "${SCENE}" NAME)
 file(READ "${PRM}" prm_text)
 file(READ "${SCENE}" scene_text)
-foreach(edit EDIT EDIT2 EDIT3 EDIT4 EDIT5 EDIT6)
+foreach(edit EDIT EDIT2 EDIT3 EDIT4 EDIT5 EDIT6 EDIT7 EDIT8)
   if(DEFINED ${edit}_FILE)
     if(${edit}_FILE STREQUAL "step")
       set(edited "${prm_text}")

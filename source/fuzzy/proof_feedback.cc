@@ -52,6 +52,15 @@ namespace FuzzyContact
                       "200",
                       Patterns::Integer(1, 100000),
                       "cg: steps of a solve at most.");
+    prm.declare_entry("spot checks",
+                      "0",
+                      Patterns::Integer(0, 100000),
+                      "Evaluations of the optimisation (of its last round), "
+                      "evenly spread over them, solved by the exact "
+                      "full-order model too: the reduced model's largest "
+                      "error there, next to the time of one evaluation of "
+                      "each model at the same points (0: none). A "
+                      "difference beyond the tolerance is a warning.");
     prm.leave_subsection();
   }
 
@@ -77,6 +86,7 @@ namespace FuzzyContact
                                    "Proofs: cg tolerance",
                                    "a relative residual");
     cg_max_iterations      = prm.get_integer("cg max iterations");
+    spot_checks            = prm.get_integer("spot checks");
     prm.leave_subsection();
   }
 

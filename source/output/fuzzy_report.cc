@@ -211,6 +211,14 @@ namespace FuzzyContact
           json["time_s"]["proofs"]      = proofs;
           json["evaluations"]["proofs"] = r.proofs.n_evaluations;
         }
+      if (r.has_spot_checks)
+        {
+          out << "  spot checks, full order               " << std::setw(8)
+              << r.spot_checks.wall_time << " s  " << r.spot_checks.n_checked
+              << " evaluations (at the optimisation's points)\n";
+          json["time_s"]["spot_checks"]      = r.spot_checks.wall_time;
+          json["evaluations"]["spot_checks"] = r.spot_checks.n_checked;
+        }
       if (r.has_vertex)
         {
           out << "  vertex method, reduced model          " << std::setw(8)
@@ -396,6 +404,7 @@ namespace FuzzyContact
       json["notes"] = r.optimisation.notes;
       report.say(notes.str());
       FuzzyStudyReport::proof_summary(r, report, json);
+      FuzzyStudyReport::spot_checks(r, report, json);
       cost(r, report, json);
     }
 

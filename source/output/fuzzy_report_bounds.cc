@@ -521,6 +521,109 @@ namespace FuzzyContact
     }
 
 
+    void
+    spot_checks(const FuzzyStudyResults &r,
+                Report                  &report,
+                nlohmann::json          &json)
+    {
+      if (!r.has_spot_checks)
+        return;
+      const SpotChecks    &c  = r.spot_checks;
+      const ProofSettings &ps = r.proof_settings;
+      // A point as the parameters' names and values.
+      const auto at = [&r](const std::vector<double> &p) {
+        std::ostringstream out;
+        out << "(";
+        for (unsigned int i = 0; i < p.size() && i < r.parameters.size(); ++i)
+          out << (i > 0 ? ", " : "") << r.parameters[i].quantity.name << " = "
+              << std::setprecision(6) << p[i];
+        out << ")";
+        return out.str();
+      };
+      std::ostringstream out, warnings;
+      out << "\nspot checks (Proofs: spot checks = " << ps.spot_checks
+          << "): " << c.n_checked << " of the optimisation's " << c.n_recorded
+          << " evaluations (of its last round), evenly spread, solved by the "
+             "full-order model too, on reused factorisations\n";
+      nlohmann::json outputs = nlohmann::json::array();
+      unsigned int   beyond  = 0;
+      for (unsigned int k = 0;
+           k < c.largest_difference.size() && k < r.outputs.size();
+           ++k)
+        {
+          const double d     = c.largest_difference[k];
+          const double range = proof_range(r.optimisation, r.proofs, k);
+          const double relative =
+            range > 0 ? d / range
+                      : (d > 0 ? std::numeric_limits<double>::infinity() : 0.);
+          // Beyond the tolerance of the range and the accuracy of the
+          // magnitude, as a proof (proof_feedback.h).
+          const bool within =
+            relative <= ps.tolerance ||
+            d <= ps.accuracy * proof_magnitude(r.optimisation, r.proofs, k);
+          out << "  " << r.outputs[k].name << ": largest |reduced - exact| "
+              << sci(d, 2) << " (" << sci(relative, 2) << " of the range)"
+              << (within ? "" : ", beyond the tolerance") << "\n";
+          if (!within)
+            {
+              ++beyond;
+              warnings << "warning: spot checks: " << r.outputs[k].name
+                       << ": reduced - exact reaches " << sci(d, 2) << ", "
+                       << sci(relative, 2)
+                       << " of the output's range (tolerance "
+                       << sci(ps.tolerance) << "), at " << at(c.argument[k])
+                       << ": the bounds are proven at their arguments only, "
+                          "and the optimisation may have missed a larger "
+                          "value where the reduced model is this far off\n";
+            }
+          outputs.push_back({{"name", r.outputs[k].name},
+                             {"largest_difference", value(d)},
+                             {"relative_error", value(relative)},
+                             {"argument", c.argument[k]},
+                             {"within_tolerance", within}});
+        }
+      if (c.n_without_solution > 0)
+        out << "  " << c.n_without_solution
+            << " point(s) without a static solution in both models\n";
+      if (c.n_disagreeing > 0)
+        {
+          warnings << "warning: spot checks: at " << c.n_disagreeing
+                   << " point(s) one model has a static solution and the "
+                      "other none, e.g. at "
+                   << at(c.disagreeing.front()) << "\n";
+        }
+      const double fast  = c.n_checked > 0 ? c.fast_seconds / c.n_checked : 0,
+                   exact = c.n_checked > 0 ? c.exact_seconds / c.n_checked : 0;
+      if (c.n_checked > 0)
+        {
+          out << "  one evaluation at these points: " << std::fixed
+              << std::setprecision(3) << 1e3 * fast
+              << " ms reduced (as the optimisation ran it, from its "
+                 "neighbours), "
+              << 1e3 * exact << " ms full order (each point alone)";
+          if (fast > 0)
+            out << ": " << std::setprecision(1) << exact / fast << "x";
+          out << "\n";
+        }
+      report.say(out.str() + warnings.str());
+      nlohmann::json disagreeing = nlohmann::json::array();
+      for (const std::vector<double> &p : c.disagreeing)
+        disagreeing.push_back(p);
+      json["spot_checks"] = {
+        {"requested", ps.spot_checks},
+        {"recorded", c.n_recorded},
+        {"checked", c.n_checked},
+        {"without_solution", c.n_without_solution},
+        {"disagreeing", c.n_disagreeing},
+        {"disagreeing_points", disagreeing},
+        {"reduced_ms", 1e3 * fast},
+        {"full_order_ms", 1e3 * exact},
+        {"ratio", fast > 0 ? value(exact / fast) : nlohmann::json()},
+        {"outputs", outputs},
+        {"all_within_tolerance", beyond == 0 && c.n_disagreeing == 0}};
+    }
+
+
     std::string
     inert(const FuzzyStudyResults &r, nlohmann::json &json)
     {

@@ -65,6 +65,11 @@ namespace FuzzyContact
     Solver       solver            = Solver::automatic;
     double       cg_tolerance      = 1e-12;
     unsigned int cg_max_iterations = 200;
+    /**
+     * Evaluations of the optimisation solved exactly too, evenly spread
+     * over them (fuzzy/spot_checks.h; 0: none).
+     */
+    unsigned int spot_checks = 0;
 
     static void
     declare_parameters(ParameterHandler &prm);

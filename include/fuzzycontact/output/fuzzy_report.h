@@ -15,6 +15,7 @@
 #include <fuzzycontact/fuzzy/fuzzy_parameters.h>
 #include <fuzzycontact/fuzzy/interval_method.h>
 #include <fuzzycontact/fuzzy/proof_feedback.h>
+#include <fuzzycontact/fuzzy/spot_checks.h>
 #include <fuzzycontact/output/output_files.h>
 #include <fuzzycontact/output/report.h>
 #include <fuzzycontact/study/fuzzy_contact_model.h>
@@ -75,6 +76,9 @@ namespace FuzzyContact
     /** The evaluations left unanswered and the probes of failed points,
      * over all ranks (FuzzyContactModel::unanswered()). */
     FuzzyContactModel::UnansweredEvaluations unanswered;
+    /** The optimisation's evaluations checked by the full-order model. */
+    SpotChecks spot_checks;
+    bool       has_spot_checks = false;
 
     /**
      * What the model built in @p offline_time [s] is: its DoFs and outputs.
@@ -173,6 +177,18 @@ namespace FuzzyContact
     proof_summary(const FuzzyStudyResults &results,
                   Report                  &report,
                   nlohmann::json          &json);
+
+    /**
+     * The spot checks (fuzzy/spot_checks.h), if they were made: the
+     * largest |reduced - exact| of every output (a `warning:` line each
+     * beyond the proofs' tolerance, and one for points where one model
+     * has a solution and the other none) and both times at the same
+     * points, said in @p report and written into @p json ("spot_checks").
+     */
+    void
+    spot_checks(const FuzzyStudyResults &results,
+                Report                  &report,
+                nlohmann::json          &json);
 
     /** The parameters that cannot change the answer, if any. */
     std::string
