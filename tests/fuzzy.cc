@@ -2130,6 +2130,7 @@ TEST(SpotChecks, ChecksEvenlySpreadEvaluationsAgainstTheExactResponse)
   EXPECT_EQ(exact_calls, 4u);
   EXPECT_EQ(c.n_without_solution, 1u);
   EXPECT_EQ(c.n_disagreeing, 1u);
+  EXPECT_EQ(c.n_fast_without, 1u);
   ASSERT_EQ(c.disagreeing.size(), 1u);
   EXPECT_EQ(c.disagreeing[0], (std::vector<double>{4., 2.}));
   ASSERT_EQ(c.largest_difference.size(), 2u);

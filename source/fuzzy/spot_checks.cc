@@ -103,6 +103,7 @@ namespace FuzzyContact
         if (fast_answered != exact_answered)
           {
             ++checks.n_disagreeing;
+            checks.n_fast_without += !fast_answered;
             checks.disagreeing.push_back(fast.point);
             continue;
           }

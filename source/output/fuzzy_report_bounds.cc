@@ -589,7 +589,9 @@ namespace FuzzyContact
         {
           warnings << "warning: spot checks: at " << c.n_disagreeing
                    << " point(s) one model has a static solution and the "
-                      "other none, e.g. at "
+                      "other none (the reduced model none at "
+                   << c.n_fast_without << ", the full-order one none at "
+                   << c.n_disagreeing - c.n_fast_without << "), e.g. at "
                    << at(c.disagreeing.front()) << "\n";
         }
       const double fast  = c.n_checked > 0 ? c.fast_seconds / c.n_checked : 0,
@@ -615,6 +617,7 @@ namespace FuzzyContact
         {"checked", c.n_checked},
         {"without_solution", c.n_without_solution},
         {"disagreeing", c.n_disagreeing},
+        {"disagreeing_without_reduced", c.n_fast_without},
         {"disagreeing_points", disagreeing},
         {"reduced_ms", 1e3 * fast},
         {"full_order_ms", 1e3 * exact},

@@ -73,8 +73,8 @@ namespace FuzzyContact
     /** The evaluations recorded (over the ranks) and the points checked. */
     unsigned long n_recorded = 0, n_checked = 0;
     /** Checked points where neither side has a solution, and where one
-     * has and the other none. */
-    unsigned long n_without_solution = 0, n_disagreeing = 0;
+     * has and the other none (of them, where the fast one has none). */
+    unsigned long n_without_solution = 0, n_disagreeing = 0, n_fast_without = 0;
     /** The fast response's time at the checked points, as recorded, and
      * the exact one's there [s]. */
     double fast_seconds = 0, exact_seconds = 0;
