@@ -2162,7 +2162,7 @@ TEST(FuzzyStudyReport, SpotChecksBeyondTheToleranceAreAWarning)
       r.proof_settings.tolerance       = 1e-4;
       r.proof_settings.accuracy        = 1e-13;
       r.proof_settings.spot_checks     = 3;
-      r.has_spot_checks                = true;
+      r.proof_settings.spot_checks     = 1;
       r.spot_checks.n_recorded         = 30;
       r.spot_checks.n_checked          = 3;
       r.spot_checks.fast_seconds       = 3e-3;
@@ -2198,7 +2198,7 @@ TEST(FuzzyStudyReport, SpotChecksBeyondTheToleranceAreAWarning)
   FuzzyStudyResults r =
     one_output_results(Interval{1e5, 1e5 + 1e-8}, Interval{1e5, 1e5 + 1e-8});
   r.proof_settings.tolerance       = 1e-4;
-  r.has_spot_checks                = true;
+  r.proof_settings.spot_checks     = 1;
   r.spot_checks.n_checked          = 1;
   r.spot_checks.largest_difference = {1e-11};
   r.spot_checks.argument           = {{}};

@@ -5,9 +5,22 @@
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
+#include <sstream>
 
 namespace FuzzyContact
 {
+  std::string
+  point_text(const std::vector<FuzzyParameter> &parameters,
+             const std::vector<double>         &values)
+  {
+    std::ostringstream point;
+    for (unsigned int i = 0; i < values.size() && i < parameters.size(); ++i)
+      point << (i > 0 ? ", " : "") << parameters[i].quantity.name << " = "
+            << values[i];
+    return point.str();
+  }
+
+
   using namespace dealii;
 
   void

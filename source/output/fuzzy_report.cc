@@ -211,7 +211,7 @@ namespace FuzzyContact
           json["time_s"]["proofs"]      = proofs;
           json["evaluations"]["proofs"] = r.proofs.n_evaluations;
         }
-      if (r.has_spot_checks)
+      if (r.proof_settings.spot_checks > 0)
         {
           out << "  spot checks, full order               " << std::setw(8)
               << r.spot_checks.wall_time << " s  " << r.spot_checks.n_checked

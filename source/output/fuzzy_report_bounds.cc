@@ -526,19 +526,12 @@ namespace FuzzyContact
                 Report                  &report,
                 nlohmann::json          &json)
     {
-      if (!r.has_spot_checks)
+      if (r.proof_settings.spot_checks == 0)
         return;
       const SpotChecks    &c  = r.spot_checks;
       const ProofSettings &ps = r.proof_settings;
-      // A point as the parameters' names and values.
-      const auto at = [&r](const std::vector<double> &p) {
-        std::ostringstream out;
-        out << "(";
-        for (unsigned int i = 0; i < p.size() && i < r.parameters.size(); ++i)
-          out << (i > 0 ? ", " : "") << r.parameters[i].quantity.name << " = "
-              << std::setprecision(6) << p[i];
-        out << ")";
-        return out.str();
+      const auto           at = [&r](const std::vector<double> &p) {
+        return "(" + point_text(r.parameters, p) + ")";
       };
       std::ostringstream out, warnings;
       out << "\nspot checks (Proofs: spot checks = " << ps.spot_checks

@@ -45,7 +45,6 @@
 #include <fuzzycontact/fuzzy/fuzzy_parameters.h>
 #include <fuzzycontact/fuzzy/optimisation_method.h>
 #include <fuzzycontact/fuzzy/proof_feedback.h>
-#include <fuzzycontact/fuzzy/spot_checks.h>
 #include <fuzzycontact/fuzzy/vertex_method.h>
 #include <fuzzycontact/output/fuzzy_report.h>
 #include <fuzzycontact/scene/scene.h>
@@ -328,13 +327,10 @@ namespace Step4
     // makes the model richer there, and the bounds are searched again
     // (fuzzy/proof_feedback.h, FuzzyContactModel::proven_bounds()).
     // (Proven also within the accuracy asked of the outputs.)
-    // (The optimisation's evaluations of its last round are kept for the
-    // spot checks, if asked for.)
     ProofSettings proofs = parameters.proofs;
     proofs.accuracy      = parameters.optimisation.response_tolerance;
-    EvaluationRecord record;
-    const Response   searched =
-      proofs.spot_checks > 0 ? record.recording(reduced) : reduced;
+    EvaluationRecord record; // (the last round's, for the spot checks)
+    const Response   searched = record.recording(reduced);
     results.set_proofs(model->proven_bounds(
       [&]() {
         record.clear();
@@ -383,29 +379,11 @@ namespace Step4
         results.reference_reuses = parameters.reference.reuse_factorisations;
       }
     // Spot checks: some of the optimisation's points solved exactly too
-    // (on the proofs' factorisations), the reduced model's error there and
-    // both times at the same points (fuzzy/spot_checks.h). Last: the
-    // full-order model keeps the contact flexibility's columns it computed
-    // where they stay exact, so the exact solves here cost the least they
-    // can after the proofs and the reference, and the reference's time is
-    // not lowered by them.
+    // (fuzzy/spot_checks.h), last, as FuzzyContactModel::spot_checks() says.
     if (proofs.spot_checks > 0)
       {
-        model->set_reuse_factorisations(true);
-        TimerOutput::Scope  scope(timer, "spot checks (full order)");
-        const unsigned int  n_ranks   = Utilities::MPI::n_mpi_processes(comm);
-        const unsigned long n_checked = std::min<unsigned long>(
-          proofs.spot_checks,
-          Utilities::MPI::sum<unsigned long>(record.evaluations().size(),
-                                             comm));
-        progress = std::make_unique<Progress>(
-          "spot checks, full-order solves" +
-            std::string(n_ranks > 1 ? " of the first rank" : ""),
-          (n_checked + n_ranks - 1) / n_ranks);
-        results.spot_checks =
-          spot_check(record, proofs.spot_checks, exact, comm);
-        results.has_spot_checks = true;
-        progress.reset();
+        TimerOutput::Scope scope(timer, "spot checks (full order)");
+        results.spot_checks = model->spot_checks(record, proofs.spot_checks);
       }
   }
 

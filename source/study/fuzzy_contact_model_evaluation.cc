@@ -343,11 +343,8 @@ namespace FuzzyContact
       {
         // Which point of the study failed, and which keys control the
         // solver that failed.
-        std::ostringstream point;
-        for (unsigned int i = 0; i < values.size(); ++i)
-          point << (i > 0 ? ", " : "") << fuzzy.parameters()[i].quantity.name
-                << " = " << values[i];
-        std::string message = "At the parameter point " + point.str() + ", " +
+        std::string message = "At the parameter point " +
+                              point_text(fuzzy.parameters(), values) + ", " +
                               model + ": " + Input::message_of(e);
         if (model.find("FL2C") != std::string::npos)
           message += " FL2C is set by the keys of subsection FL2C "

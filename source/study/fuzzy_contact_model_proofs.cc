@@ -3,6 +3,7 @@
 // offline build, and the rounds of enrichment and new search where a bound
 // is not proven (fuzzy/proof_feedback.h).
 
+#include <fuzzycontact/base/progress.h>
 #include <fuzzycontact/base/timer_section.h>
 #include <fuzzycontact/fuzzy/bound_proof.h>
 #include <fuzzycontact/study/fuzzy_contact_model.h>
@@ -82,5 +83,29 @@ namespace FuzzyContact
     result.cg          = iterative_statistics();
     result.model_after = round > 0 ? describe() : "";
     return result;
+  }
+
+
+  SpotChecks
+  FuzzyContactModel::spot_checks(const EvaluationRecord &record,
+                                 const unsigned int      n)
+  {
+    set_reuse_factorisations(true);
+    const unsigned int  n_ranks   = Utilities::MPI::n_mpi_processes(comm);
+    const unsigned long n_checked = std::min<unsigned long>(
+      n,
+      Utilities::MPI::sum<unsigned long>(record.evaluations().size(), comm));
+    Progress progress("spot checks, full-order solves" +
+                        std::string(n_ranks > 1 ? " of the first rank" : ""),
+                      (n_checked + n_ranks - 1) / n_ranks);
+    return spot_check(
+      record,
+      n,
+      [&](const std::vector<double> &p) {
+        std::vector<double> values = full_order(p);
+        progress.advance();
+        return values;
+      },
+      comm);
   }
 } // namespace FuzzyContact

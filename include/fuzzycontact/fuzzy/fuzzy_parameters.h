@@ -42,6 +42,14 @@ namespace FuzzyContact
     FuzzyNumber   number;
   };
 
+  /**
+   * A point of the parameters @p parameters as the user reads it:
+   * "P1.E = 2.1e+11, P1.tip.force = 50000" (6 significant digits).
+   */
+  std::string
+  point_text(const std::vector<FuzzyParameter> &parameters,
+             const std::vector<double>         &values);
+
   class FuzzyParameterSet
   {
   public:

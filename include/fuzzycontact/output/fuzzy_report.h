@@ -76,9 +76,9 @@ namespace FuzzyContact
     /** The evaluations left unanswered and the probes of failed points,
      * over all ranks (FuzzyContactModel::unanswered()). */
     FuzzyContactModel::UnansweredEvaluations unanswered;
-    /** The optimisation's evaluations checked by the full-order model. */
+    /** The optimisation's evaluations checked by the full-order model
+     * (if proof_settings.spot_checks > 0). */
     SpotChecks spot_checks;
-    bool       has_spot_checks = false;
 
     /**
      * What the model built in @p offline_time [s] is: its DoFs and outputs.

@@ -44,6 +44,7 @@
 #include <fuzzycontact/fuzzy/fuzzy_parameters.h>
 #include <fuzzycontact/fuzzy/interval_method.h>
 #include <fuzzycontact/fuzzy/proof_feedback.h>
+#include <fuzzycontact/fuzzy/spot_checks.h>
 #include <fuzzycontact/modal/modal_solver.h>
 #include <fuzzycontact/scene/scene.h>
 #include <fuzzycontact/study/contact_scene.h>
@@ -352,6 +353,18 @@ namespace FuzzyContact
                                            std::size_t  n_points,
                                            unsigned int added)> &enriched,
                   TimerOutput *timer = nullptr);
+
+    /**
+     * The spot checks of @p n of the reduced evaluations in @p record
+     * (fuzzy/spot_checks.h): full_order() there on reused factorisations,
+     * with progress lines. Best called last: the full-order model keeps
+     * the contact flexibility's columns it computed where they stay
+     * exact, so its solves here cost the least they can, and a reference
+     * run after them would be timed on columns they computed. Collective
+     * over the communicator of the constructor.
+     */
+    SpotChecks
+    spot_checks(const EvaluationRecord &record, const unsigned int n);
 
     /** The reduced model (for its description and checks). */
     const ReducedOrderModel &
