@@ -773,10 +773,17 @@ TEST(FloatingBodies, TwoStackedBodiesNearTheLimitOfSliding)
 }
 
 // The key `Exact contact solver/max path solves` bounds that path: on the
-// same scene at mu = 0.2001 (which needs 12 solves on it), a limit of 3
-// makes the full-order solve fail with a message that gives the limit,
-// and the key refuses a limit below 1 naming itself. Without the last
-// resorts (ActiveSetParameters::last_resorts) the path is not taken.
+// same scene at mu = 0.2001 (which needs 12 solves on it, one per halving
+// of the distance to the limit), a limit of 3 makes the full-order solve
+// fail at once, the path not taken, with a message that gives the solves
+// it needs and the limit, and the key refuses a limit below 1 naming
+// itself. Without the last resorts (ActiveSetParameters::last_resorts) the
+// path is not taken. `max path failures` bounds the path's failed solves:
+// on the pin of prm/pin.prm a little below the friction that holds it
+// within small sliding, the path's first solve converges and each later one
+// cycles (its retries, closer and closer to the first, took 32 solves, 16
+// of them failed, before the key); with the default 4 the solve ends at the
+// fifth failure, and with 0 at the first.
 TEST(FloatingBodies, ThePathOfFrictionCoefficientsHasAKey)
 {
   const Scene         s = bearing("0.2001");
@@ -786,17 +793,47 @@ TEST(FloatingBodies, ThePathOfFrictionCoefficientsHasAKey)
   limited.max_path_solves = 3;
   FullOrderModel full(bodies, outputs.dofs(), limited);
   full.set_state(SceneState(s));
-  std::string message;
-  try
-    {
-      full.solve();
-    }
-  catch (const ExceptionBase &e)
-    {
-      message = Input::message_of(e);
-    }
-  EXPECT_NE(message.find("3 solve(s) of at most 3"), std::string::npos)
+  std::string message = error_of([&]() {
+    full.solve();
+  });
+  EXPECT_NE(message.find("not along a path of friction coefficients down to "
+                         "the given ones: so near the limit of sliding it "
+                         "would take at least 12 solves, more than the 3 of "
+                         "key 'Exact contact solver/max path solves'"),
+            std::string::npos)
     << message;
+
+  // The pin at a point of a fuzzy study of it (Lug.E 251.121 GPa, mu
+  // 0.098796, 180.699 kN): the path's first solve converges, each later
+  // one cycles.
+  {
+    const Scene  pin_scene = scene("pin");
+    ContactScene pin_bodies(pin_scene, 0);
+    SceneState   state(pin_scene);
+    state.zone_moduli[1][0]     = 251.121e9;
+    state.friction_coefficients = {0.098796};
+    state.load_forces[0][0]     = 180.699e3;
+    for (const auto &[failures, said] :
+         std::vector<std::pair<unsigned int, std::string>>{
+           {4,
+            "6 solve(s) of at most 32 (key 'Exact contact solver/max "
+            "path solves'), 5 failed (at most 4 may: key 'Exact contact "
+            "solver/max path failures')"},
+           {0,
+            "2 solve(s) of at most 32 (key 'Exact contact solver/max "
+            "path solves'), 1 failed (at most 0 may"},
+           {10000, "32 solve(s) of at most 32"}})
+      {
+        ActiveSetParameters parameters;
+        parameters.max_path_failures = failures;
+        FullOrderModel pin(pin_bodies, ObservedDofs(2), parameters);
+        pin.set_state(state);
+        message = error_of([&]() {
+          pin.solve();
+        });
+        EXPECT_NE(message.find(said), std::string::npos) << message;
+      }
+  }
 
   // Without the last resorts (as a fuzzy study's probes of a failed point
   // solve) the solve stops after the load path's attempt: it fails where
@@ -806,36 +843,30 @@ TEST(FloatingBodies, ThePathOfFrictionCoefficientsHasAKey)
   quick.last_resorts = false;
   FullOrderModel probe(bodies, outputs.dofs(), quick);
   probe.set_state(SceneState(s));
-  message.clear();
-  try
-    {
-      probe.solve();
-    }
-  catch (const ExceptionBase &e)
-    {
-      message = Input::message_of(e);
-    }
+  message = error_of([&]() {
+    probe.solve();
+  });
   EXPECT_FALSE(message.empty());
-  EXPECT_EQ(message.find("solve(s) of at most"), std::string::npos) << message;
+  EXPECT_EQ(message.find("path of friction"), std::string::npos) << message;
 
-  ParameterHandler prm;
-  ActiveSetParameters::declare_parameters(prm);
-  prm.parse_input_from_string("subsection Exact contact solver\n"
-                              "set max path solves = 0\nend\n");
-  ActiveSetParameters parsed;
-  message.clear();
-  try
+  // Each key refuses a value out of its range, naming itself.
+  for (const auto &[line, said] :
+       std::vector<std::pair<std::string, std::string>>{
+         {"set max path solves = 0",
+          "max path solves must lie between 1 and 10000, got 0"},
+         {"set max path failures = -1",
+          "max path failures must lie between 0 and 10000, got -1"}})
     {
-      parsed.parse_parameters(prm);
+      ParameterHandler prm;
+      ActiveSetParameters::declare_parameters(prm);
+      prm.parse_input_from_string("subsection Exact contact solver\n" + line +
+                                  "\nend\n");
+      ActiveSetParameters parsed;
+      message = error_of([&]() {
+        parsed.parse_parameters(prm);
+      });
+      EXPECT_NE(message.find(said), std::string::npos) << message;
     }
-  catch (const ExceptionBase &e)
-    {
-      message = Input::message_of(e);
-    }
-  EXPECT_NE(message.find("max path solves must lie between 1 and 10000, "
-                         "got 0"),
-            std::string::npos)
-    << message;
 }
 
 // The same scene with sliding possible inside the fuzzy ranges (mu of the

@@ -35,6 +35,14 @@ namespace FuzzyContact
                       "ones (each solve halves the distance to the limit, "
                       "a failed one is tried again closer to the last that "
                       "converged); at most this many solves.");
+    prm.declare_entry("max path failures",
+                      "4",
+                      Patterns::Integer(),
+                      "Failed solves on that path (each is retried closer "
+                      "to the last that converged) before the step gives "
+                      "up: where the path leads to an answer it fails a "
+                      "few times at most; where it does not, every retry "
+                      "fails.");
     prm.leave_subsection();
   }
 
@@ -49,13 +57,18 @@ namespace FuzzyContact
                 ExcMessage("Exact contact solver: max iterations must be at "
                            "least 1, got " +
                            std::to_string(n) + "."));
-    max_iterations    = n;
-    const long solves = prm.get_integer("max path solves");
-    AssertThrow(solves >= 1 && solves <= 10000,
-                ExcMessage("Exact contact solver: max path solves must lie "
-                           "between 1 and 10000, got " +
-                           std::to_string(solves) + "."));
-    max_path_solves = solves;
+    max_iterations = n;
+    // An integer key of this subsection between @p low and 10000.
+    const auto count = [&prm](const std::string &key, const long low) {
+      const long value = prm.get_integer(key);
+      AssertThrow(value >= low && value <= 10000,
+                  ExcMessage("Exact contact solver: " + key +
+                             " must lie between " + std::to_string(low) +
+                             " and 10000, got " + std::to_string(value) + "."));
+      return static_cast<unsigned int>(value);
+    };
+    max_path_solves   = count("max path solves", 1);
+    max_path_failures = count("max path failures", 0);
     prm.leave_subsection();
   }
 } // namespace FuzzyContact

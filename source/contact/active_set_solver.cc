@@ -112,21 +112,31 @@ namespace FuzzyContact
     //    distance s - s_min to the limit of sliding at most halved per
     //    solve (a solve that fails is tried again closer to the last
     //    converged one, the distance's ratio square-rooted; at most
-    //    max_path_solves solves): far from the limit the iterations
-    //    settle, and each solve then starts from statuses near its own
-    //    (near the limit nearly every node slips, and the few that stick
-    //    decide the free motions);
+    //    max_path_solves solves, of which at most max_path_failures
+    //    fail): far from the limit the iterations settle, and each solve
+    //    then starts from statuses near its own (near the limit nearly
+    //    every node slips, and the few that stick decide the free
+    //    motions). A path that would need more solves than allowed even
+    //    if each converged (a point at the very limit: 1 - s_min = 1e-12
+    //    takes 41) is not taken. Where the path does not lead to an
+    //    answer, its retries fail one after the other, each costing a
+    //    whole cycling solve (a pin that would turn in its bore, the
+    //    linear problem solvable only beyond small sliding: 32 solves,
+    //    16 to 28 of them failed; the paths that converged in studies of
+    //    the shipped scenes failed at most 4 times: doc/contact.md);
     //  - otherwise up from 0 in 8 solves.
     const std::vector<double> frictionless(mu.size(), 0.);
     Vector<double>            p0;
     LoadStep                  ramped = cold;
     std::vector<double>       m(mu.size());
     ContactState              state;
-    unsigned int              iterations = 0, solves = 0;
+    unsigned int              iterations = 0, solves = 0, failures = 0;
     // The path as said in the final message: its first factor and the
-    // last that converged (0: none).
-    double     first = 0, reached = 0;
-    const auto solve_at = [&](const double s) {
+    // last that converged (0: none); or, if it was not taken, the solves
+    // it would have needed.
+    double       first = 0, reached = 0;
+    unsigned int needed   = 0;
+    const auto   solve_at = [&](const double s) {
       for (unsigned int k = 0; k < mu.size(); ++k)
         m[k] = s == 1 ? mu[k] : s * mu[k];
       if (solves++ == 0)
@@ -142,7 +152,17 @@ namespace FuzzyContact
           {
             const double s_min = least_friction_factor(step, mu, 0, 1, 1e-3);
             const double final_margin = std::max(1 - s_min, 1e-12);
-            double       margin = 1, next = 1;
+            // The solves of a path on which every one converges: at the
+            // distance 1, then one per halving down to final_margin.
+            unsigned int at_least = 1;
+            for (double d = 1; d > final_margin; d /= 2)
+              ++at_least;
+            if (at_least > parameters_.max_path_solves)
+              {
+                needed = at_least;
+                AssertThrow(false, ExcMessage("the path is too long"));
+              }
+            double margin = 1, next = 1;
             while (true)
               {
                 next = std::max(next, final_margin);
@@ -158,7 +178,8 @@ namespace FuzzyContact
                   }
                 catch (const ExceptionBase &)
                   {
-                    if (margin == next)
+                    if (++failures > parameters_.max_path_failures ||
+                        margin == next)
                       throw;
                     next = std::sqrt(margin * next);
                   }
@@ -173,15 +194,29 @@ namespace FuzzyContact
         std::ostringstream said;
         said << message
              << " (Solved again from the previous load step's state, with "
-                "slips allowed to reverse at once, and along a path of "
-                "friction coefficients from "
-             << first << " times the given ones to them, " << solves
-             << " solve(s) of at most " << parameters_.max_path_solves
-             << ", each from the statuses of the last converged one: ";
-        if (reached > 0)
-          said << "the last converged at " << reached << " times them.)";
+                "slips allowed to reverse at once";
+        if (needed > 0)
+          said << "; not along a path of friction coefficients down to the "
+                  "given ones: so near the limit of sliding it would take "
+                  "at least "
+               << needed << " solves, more than the "
+               << parameters_.max_path_solves
+               << " of key 'Exact contact solver/max path solves'.)";
         else
-          said << "none converged.)";
+          {
+            said << ", and along a path of friction coefficients from " << first
+                 << " times the given ones to them, " << solves
+                 << " solve(s) of at most " << parameters_.max_path_solves
+                 << " (key 'Exact contact solver/max path solves'), "
+                 << failures << " failed (at most "
+                 << parameters_.max_path_failures
+                 << " may: key 'Exact contact solver/max path failures'), "
+                    "each from the statuses of the last converged one: ";
+            if (reached > 0)
+              said << "the last converged at " << reached << " times them.)";
+            else
+              said << "none converged.)";
+          }
         AssertThrow(false, ExcMessage(said.str()));
       }
     state.iterations = iterations;

@@ -84,6 +84,13 @@ namespace FuzzyContact
      */
     unsigned int max_path_solves = 32;
     /**
+     * The failed solves on that path before the step gives up (each is
+     * retried closer to the last converged one). Where the path leads to
+     * an answer it fails a few times at most; where it does not, every
+     * retry fails, each a whole cycling solve.
+     */
+    unsigned int max_path_failures = 4;
+    /**
      * Whether a step of bodies held by contact alone with friction that
      * fails from its starts is tried again with slips allowed to reverse
      * at once, then along the path of friction coefficients (the last
