@@ -18,6 +18,7 @@
 #include <fuzzycontact/contact/fl2c.h>
 #include <fuzzycontact/contact/full_order_contact.h>
 #include <fuzzycontact/contact/fuzzy_regulator.h>
+#include <fuzzycontact/contact/static_equilibrium.h>
 #include <fuzzycontact/contact/status_solver.h>
 #include <fuzzycontact/contact/status_system.h>
 #include <fuzzycontact/fe/beam_theory.h>
@@ -1240,6 +1241,67 @@ TEST(FL2C, TheCoarseCorrectionKeepsItsFactorsInAWorkspace)
 // iteration, so it has its own limit (3 per node), and the active set
 // iterations after it count from there. Without friction and with every
 // node closed, p_n solves W_nn p_n = -g_n: LAPACK's answer to 1e-9.
+// admissible_forces() keeps its last few answers (the same test recurs at
+// every cold start of a point); each answer must be that of its own input.
+// A block on a flat, free to slide (x) and to move normal to it (y), on two
+// nodes: a load's resultant b = -e is admissible iff b_y > 0 and |b_x| <=
+// mu b_y (tangential rows scaled by c: |b_x| <= c mu b_y). Inputs that
+// differ in the friction, the load or the geometry alone, each after the
+// others, and an input again after more than the answers kept; every
+// answer against that rule, its forces against the balance G^T p = b.
+TEST(StaticEquilibrium, AdmissibleForcesAnswerEachInputByItsOwn)
+{
+  RigidMotions rigid;
+  rigid.names      = {"x", "y"};
+  const auto block = [&](const double c) {
+    rigid.gaps.reinit(4, 2);
+    for (unsigned int k = 0; k < 2; ++k)
+      {
+        rigid.gaps(normal_row(k), 1)     = 1;
+        rigid.gaps(tangential_row(k), 0) = c;
+      }
+  };
+  struct Input
+  {
+    double mu, bx, by, c;
+  };
+  const std::vector<Input> inputs = {{0.3, 0.2, 1, 1},
+                                     {0.1, 0.2, 1, 1},
+                                     {0.3, 0.2, 1, 0.5},
+                                     {0.3, 0.2, 1, 1},
+                                     {0.3, 0.35, 1, 1},
+                                     {0.3, 0.2, -1, 1},
+                                     {0.25, 0.2, 1, 1},
+                                     {0.2, 0.2, 1, 2},
+                                     {0.3, 0.29, 1, 1},
+                                     {0.3, 0.2, 1, 1},
+                                     {0.1, 0.2, 1, 1}};
+  for (const Input &in : inputs)
+    {
+      block(in.c);
+      LoadStep step;
+      step.step  = 1;
+      step.rigid = &rigid;
+      step.rigid_load.reinit(2);
+      step.rigid_load[0] = -in.bx;
+      step.rigid_load[1] = -in.by;
+      Vector<double> p;
+      const bool     admissible =
+        admissible_forces(step, std::vector<double>(2, in.mu), p);
+      EXPECT_EQ(admissible,
+                in.by > 0 && std::abs(in.bx) <= in.c * in.mu * in.by)
+        << in.mu << " " << in.bx << " " << in.by << " " << in.c;
+      if (admissible)
+        for (unsigned int j = 0; j < 2; ++j)
+          {
+            double resultant = 0;
+            for (unsigned int r = 0; r < 4; ++r)
+              resultant += rigid.gaps(r, j) * p[r];
+            EXPECT_NEAR(resultant, j == 0 ? in.bx : in.by, 1e-12);
+          }
+    }
+}
+
 TEST(ActiveSetSolver, TheFrictionlessStartClosesEveryNodeWhateverTheLimit)
 {
   const unsigned int  n_nodes = 20, n = 2 * n_nodes;

@@ -162,74 +162,144 @@ namespace FuzzyContact
   } // namespace
 
 
+  namespace
+  {
+    // The NNLS test of admissible_forces() itself.
+    bool
+    solve_admissible_forces(const LoadStep            &step,
+                            const std::vector<double> &mu,
+                            Vector<double>            &p,
+                            double                    *unbalanced);
+
+    // The last few answers of admissible_forces(), by their whole input:
+    // the same test recurs with the same load, geometry and friction at
+    // every cold start of a point (the exact solver's attempts and the
+    // frictionless start of each, its path, the probes of a failed point
+    // with more friction: the frictionless test there does not depend on
+    // the friction), and on a fine mesh one test can cost as much as the
+    // contact solve (the pin of prm/pin.prm at two refinements, 1026 cone
+    // edges on 3 free motions: the edges of neighbouring nodes are nearly
+    // parallel, and the NNLS's passive sets go through the pseudo-inverse
+    // again and again). An input compared entry by entry, so a hit is the
+    // test's own answer.
+    struct AdmissibleAnswer
+    {
+      FullMatrix<double>  gaps;
+      Vector<double>      load;
+      std::vector<double> mu;
+      bool                admissible;
+      Vector<double>      p;
+      double              unbalanced;
+    };
+    thread_local std::vector<AdmissibleAnswer> answers;
+    thread_local unsigned int                  next_answer  = 0;
+    constexpr unsigned int                     kept_answers = 4;
+  } // namespace
+
+
   bool
   admissible_forces(const LoadStep            &step,
                     const std::vector<double> &mu,
                     Vector<double>            &p,
                     double                    *unbalanced)
   {
-    const unsigned int r = step.n_motions();
-    p.reinit(2 * mu.size());
-    if (unbalanced != nullptr)
-      *unbalanced = 0;
-    Vector<double> b(r);
-    for (unsigned int j = 0; j < r; ++j)
-      b[j] = -step.rigid_load[j];
-    if (r == 0 || b.l2_norm() == 0)
-      return true;
-    // The edges of node k's friction cone: p_n = 1, p_t = +-mu (one edge
-    // without friction), as resultants along the free motions, normalised.
+    if (step.n_motions() == 0)
+      return solve_admissible_forces(step, mu, p, unbalanced);
     const FullMatrix<double> &G = step.rigid->gaps;
-    struct Edge
-    {
-      unsigned int node;
-      double       t, norm;
-    };
-    std::vector<Edge> edges;
-    edges.reserve(2 * mu.size());
-    EdgeMatrix A;
-    A.m = r;
-    A.entries.reserve(2 * mu.size() * r);
-    for (unsigned int k = 0; k < mu.size(); ++k)
-      for (const double t : {1., -1.})
+    for (const AdmissibleAnswer &a : answers)
+      if (a.mu == mu && a.load.size() == step.rigid_load.size() &&
+          a.load == step.rigid_load && a.gaps.m() == G.m() &&
+          a.gaps.n() == G.n() && a.gaps == G)
         {
-          if (t < 0 && mu[k] == 0)
-            continue;
-          const std::size_t start = A.entries.size();
-          double            norm  = 0;
-          for (unsigned int j = 0; j < r; ++j)
-            {
-              const double a =
-                G(normal_row(k), j) + t * mu[k] * G(tangential_row(k), j);
-              A.entries.push_back(a);
-              norm += a * a;
-            }
-          if (norm == 0)
-            {
-              A.entries.resize(start);
-              continue;
-            }
-          norm = std::sqrt(norm);
-          for (std::size_t e = start; e < A.entries.size(); ++e)
-            A.entries[e] /= norm;
-          edges.push_back(Edge{k, t, norm});
+          p = a.p;
+          if (unbalanced != nullptr)
+            *unbalanced = a.unbalanced;
+          return a.admissible;
         }
-    A.n                           = edges.size();
-    const std::vector<double> q   = nonnegative_least_squares(A, b);
-    Vector<double>            gap = b;
-    for (unsigned int c = 0; c < edges.size(); ++c)
-      if (q[c] != 0)
-        {
-          for (unsigned int j = 0; j < r; ++j)
-            gap[j] -= A.column(c)[j] * q[c];
-          const unsigned int k = edges[c].node;
-          p[normal_row(k)] += q[c] / edges[c].norm;
-          p[tangential_row(k)] += edges[c].t * mu[k] * q[c] / edges[c].norm;
-        }
+    double     fraction   = 0;
+    const bool admissible = solve_admissible_forces(step, mu, p, &fraction);
     if (unbalanced != nullptr)
-      *unbalanced = gap.l2_norm() / b.l2_norm();
-    return gap.l2_norm() <= 1e-8 * b.l2_norm();
+      *unbalanced = fraction;
+    if (answers.size() < kept_answers)
+      answers.emplace_back();
+    AdmissibleAnswer &a = answers[next_answer];
+    next_answer         = (next_answer + 1) % kept_answers;
+    a = {step.rigid->gaps, step.rigid_load, mu, admissible, p, fraction};
+    return admissible;
   }
+
+
+  namespace
+  {
+    bool
+    solve_admissible_forces(const LoadStep            &step,
+                            const std::vector<double> &mu,
+                            Vector<double>            &p,
+                            double                    *unbalanced)
+    {
+      const unsigned int r = step.n_motions();
+      p.reinit(2 * mu.size());
+      if (unbalanced != nullptr)
+        *unbalanced = 0;
+      Vector<double> b(r);
+      for (unsigned int j = 0; j < r; ++j)
+        b[j] = -step.rigid_load[j];
+      if (r == 0 || b.l2_norm() == 0)
+        return true;
+      // The edges of node k's friction cone: p_n = 1, p_t = +-mu (one edge
+      // without friction), as resultants along the free motions, normalised.
+      const FullMatrix<double> &G = step.rigid->gaps;
+      struct Edge
+      {
+        unsigned int node;
+        double       t, norm;
+      };
+      std::vector<Edge> edges;
+      edges.reserve(2 * mu.size());
+      EdgeMatrix A;
+      A.m = r;
+      A.entries.reserve(2 * mu.size() * r);
+      for (unsigned int k = 0; k < mu.size(); ++k)
+        for (const double t : {1., -1.})
+          {
+            if (t < 0 && mu[k] == 0)
+              continue;
+            const std::size_t start = A.entries.size();
+            double            norm  = 0;
+            for (unsigned int j = 0; j < r; ++j)
+              {
+                const double a =
+                  G(normal_row(k), j) + t * mu[k] * G(tangential_row(k), j);
+                A.entries.push_back(a);
+                norm += a * a;
+              }
+            if (norm == 0)
+              {
+                A.entries.resize(start);
+                continue;
+              }
+            norm = std::sqrt(norm);
+            for (std::size_t e = start; e < A.entries.size(); ++e)
+              A.entries[e] /= norm;
+            edges.push_back(Edge{k, t, norm});
+          }
+      A.n                           = edges.size();
+      const std::vector<double> q   = nonnegative_least_squares(A, b);
+      Vector<double>            gap = b;
+      for (unsigned int c = 0; c < edges.size(); ++c)
+        if (q[c] != 0)
+          {
+            for (unsigned int j = 0; j < r; ++j)
+              gap[j] -= A.column(c)[j] * q[c];
+            const unsigned int k = edges[c].node;
+            p[normal_row(k)] += q[c] / edges[c].norm;
+            p[tangential_row(k)] += edges[c].t * mu[k] * q[c] / edges[c].norm;
+          }
+      if (unbalanced != nullptr)
+        *unbalanced = gap.l2_norm() / b.l2_norm();
+      return gap.l2_norm() <= 1e-8 * b.l2_norm();
+    }
+  } // namespace
 
 
   double
