@@ -171,7 +171,9 @@ namespace FuzzyContact
                             Vector<double>            &p,
                             double                    *unbalanced);
 
-    // The last few answers of admissible_forces(), by their whole input:
+    // The last few answers of admissible_forces(), by their whole input
+    // (the bisection of least_friction_factor(), whose tests are each new,
+    // goes without them):
     // the same test recurs with the same load, geometry and friction at
     // every cold start of a point (the exact solver's attempts and the
     // frictionless start of each, its path, the probes of a failed point
@@ -191,8 +193,8 @@ namespace FuzzyContact
       Vector<double>      p;
       double              unbalanced;
     };
+    // (Most recently used first.)
     thread_local std::vector<AdmissibleAnswer> answers;
-    thread_local unsigned int                  next_answer  = 0;
     constexpr unsigned int                     kept_answers = 4;
   } // namespace
 
@@ -206,25 +208,26 @@ namespace FuzzyContact
     if (step.n_motions() == 0)
       return solve_admissible_forces(step, mu, p, unbalanced);
     const FullMatrix<double> &G = step.rigid->gaps;
-    for (const AdmissibleAnswer &a : answers)
-      if (a.mu == mu && a.load.size() == step.rigid_load.size() &&
-          a.load == step.rigid_load && a.gaps.m() == G.m() &&
-          a.gaps.n() == G.n() && a.gaps == G)
+    for (auto a = answers.begin(); a != answers.end(); ++a)
+      if (a->mu == mu && a->load.size() == step.rigid_load.size() &&
+          a->load == step.rigid_load && a->gaps.m() == G.m() &&
+          a->gaps.n() == G.n() && a->gaps == G)
         {
-          p = a.p;
+          std::rotate(answers.begin(), a, a + 1);
+          p = answers.front().p;
           if (unbalanced != nullptr)
-            *unbalanced = a.unbalanced;
-          return a.admissible;
+            *unbalanced = answers.front().unbalanced;
+          return answers.front().admissible;
         }
     double     fraction   = 0;
     const bool admissible = solve_admissible_forces(step, mu, p, &fraction);
     if (unbalanced != nullptr)
       *unbalanced = fraction;
-    if (answers.size() < kept_answers)
-      answers.emplace_back();
-    AdmissibleAnswer &a = answers[next_answer];
-    next_answer         = (next_answer + 1) % kept_answers;
-    a = {step.rigid->gaps, step.rigid_load, mu, admissible, p, fraction};
+    if (answers.size() == kept_answers)
+      answers.pop_back();
+    answers.insert(
+      answers.begin(),
+      AdmissibleAnswer{G, step.rigid_load, mu, admissible, p, fraction});
     return admissible;
   }
 
@@ -322,7 +325,9 @@ namespace FuzzyContact
           low > 0 ? std::sqrt(low * high) : (low + high) / 2;
         for (unsigned int k = 0; k < mu.size(); ++k)
           scaled[k] = middle * mu[k];
-        (admissible_forces(step, scaled, p) ? high : low) = middle;
+        // (Each test of the bisection is new: not kept.)
+        (solve_admissible_forces(step, scaled, p, nullptr) ? high : low) =
+          middle;
       }
     return high;
   }
