@@ -159,81 +159,8 @@ namespace FuzzyContact
         }
       return x;
     }
-  } // namespace
 
-
-  namespace
-  {
     // The NNLS test of admissible_forces() itself.
-    bool
-    solve_admissible_forces(const LoadStep            &step,
-                            const std::vector<double> &mu,
-                            Vector<double>            &p,
-                            double                    *unbalanced);
-
-    // The last few answers of admissible_forces(), by their whole input
-    // (the bisection of least_friction_factor(), whose tests are each new,
-    // goes without them):
-    // the same test recurs with the same load, geometry and friction at
-    // every cold start of a point (the exact solver's attempts and the
-    // frictionless start of each, its path, the probes of a failed point
-    // with more friction: the frictionless test there does not depend on
-    // the friction), and on a fine mesh one test can cost as much as the
-    // contact solve (the pin of prm/pin.prm at two refinements, 1026 cone
-    // edges on 3 free motions: the edges of neighbouring nodes are nearly
-    // parallel, and the NNLS's passive sets go through the pseudo-inverse
-    // again and again). An input compared entry by entry, so a hit is the
-    // test's own answer.
-    struct AdmissibleAnswer
-    {
-      FullMatrix<double>  gaps;
-      Vector<double>      load;
-      std::vector<double> mu;
-      bool                admissible;
-      Vector<double>      p;
-      double              unbalanced;
-    };
-    // (Most recently used first.)
-    thread_local std::vector<AdmissibleAnswer> answers;
-    constexpr unsigned int                     kept_answers = 4;
-  } // namespace
-
-
-  bool
-  admissible_forces(const LoadStep            &step,
-                    const std::vector<double> &mu,
-                    Vector<double>            &p,
-                    double                    *unbalanced)
-  {
-    if (step.n_motions() == 0)
-      return solve_admissible_forces(step, mu, p, unbalanced);
-    const FullMatrix<double> &G = step.rigid->gaps;
-    for (auto a = answers.begin(); a != answers.end(); ++a)
-      if (a->mu == mu && a->load.size() == step.rigid_load.size() &&
-          a->load == step.rigid_load && a->gaps.m() == G.m() &&
-          a->gaps.n() == G.n() && a->gaps == G)
-        {
-          std::rotate(answers.begin(), a, a + 1);
-          p = answers.front().p;
-          if (unbalanced != nullptr)
-            *unbalanced = answers.front().unbalanced;
-          return answers.front().admissible;
-        }
-    double     fraction   = 0;
-    const bool admissible = solve_admissible_forces(step, mu, p, &fraction);
-    if (unbalanced != nullptr)
-      *unbalanced = fraction;
-    if (answers.size() == kept_answers)
-      answers.pop_back();
-    answers.insert(
-      answers.begin(),
-      AdmissibleAnswer{G, step.rigid_load, mu, admissible, p, fraction});
-    return admissible;
-  }
-
-
-  namespace
-  {
     bool
     solve_admissible_forces(const LoadStep            &step,
                             const std::vector<double> &mu,
@@ -302,7 +229,65 @@ namespace FuzzyContact
         *unbalanced = gap.l2_norm() / b.l2_norm();
       return gap.l2_norm() <= 1e-8 * b.l2_norm();
     }
+
+    // The last few answers of admissible_forces(), by their whole input.
+    // The same test recurs with the same load, geometry and friction at
+    // every cold start of a point (the exact solver's attempts and the
+    // frictionless start of each, its path, the probes of a failed point
+    // with more friction: the frictionless test there does not depend on
+    // the friction), and on a fine mesh one test can cost as much as the
+    // contact solve (the pin of prm/pin.prm at two refinements, 1026 cone
+    // edges on 3 free motions: the edges of neighbouring nodes are nearly
+    // parallel, and the NNLS's passive sets go through the pseudo-inverse
+    // again and again). An input compared entry by entry, so a hit is the
+    // test's own answer. The bisection of least_friction_factor(), whose
+    // tests are each new, goes without them.
+    struct AdmissibleAnswer
+    {
+      FullMatrix<double>  gaps;
+      Vector<double>      load;
+      std::vector<double> mu;
+      bool                admissible;
+      Vector<double>      p;
+      double              unbalanced;
+    };
+    // (Most recently used first.)
+    thread_local std::vector<AdmissibleAnswer> answers;
+    constexpr unsigned int                     kept_answers = 4;
   } // namespace
+
+
+  bool
+  admissible_forces(const LoadStep            &step,
+                    const std::vector<double> &mu,
+                    Vector<double>            &p,
+                    double                    *unbalanced)
+  {
+    if (step.n_motions() == 0)
+      return solve_admissible_forces(step, mu, p, unbalanced);
+    const FullMatrix<double> &G = step.rigid->gaps;
+    for (auto a = answers.begin(); a != answers.end(); ++a)
+      if (a->mu == mu && a->load.size() == step.rigid_load.size() &&
+          a->load == step.rigid_load && a->gaps.m() == G.m() &&
+          a->gaps.n() == G.n() && a->gaps == G)
+        {
+          std::rotate(answers.begin(), a, a + 1);
+          p = answers.front().p;
+          if (unbalanced != nullptr)
+            *unbalanced = answers.front().unbalanced;
+          return answers.front().admissible;
+        }
+    double     fraction   = 0;
+    const bool admissible = solve_admissible_forces(step, mu, p, &fraction);
+    if (unbalanced != nullptr)
+      *unbalanced = fraction;
+    if (answers.size() == kept_answers)
+      answers.pop_back();
+    answers.insert(
+      answers.begin(),
+      AdmissibleAnswer{G, step.rigid_load, mu, admissible, p, fraction});
+    return admissible;
+  }
 
 
   double
