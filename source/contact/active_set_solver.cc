@@ -135,8 +135,11 @@ namespace FuzzyContact
     // last that converged (0: none); or, if it was not taken, the solves
     // it would have needed.
     double       first = 0, reached = 0;
-    unsigned int needed   = 0;
-    const auto   solve_at = [&](const double s) {
+    unsigned int needed = 0;
+    // Whether the path halves the distance to the limit (its failed
+    // solves are retried); the ramp up from 0 ends at its first failure.
+    bool       halving  = false;
+    const auto solve_at = [&](const double s) {
       for (unsigned int k = 0; k < mu.size(); ++k)
         m[k] = s == 1 ? mu[k] : s * mu[k];
       if (solves++ == 0)
@@ -162,6 +165,7 @@ namespace FuzzyContact
                 needed = at_least;
                 AssertThrow(false, ExcMessage("the path is too long"));
               }
+            halving       = true;
             double margin = 1, next = 1;
             while (true)
               {
@@ -207,11 +211,12 @@ namespace FuzzyContact
             said << ", and along a path of friction coefficients from " << first
                  << " times the given ones to them, " << solves
                  << " solve(s) of at most " << parameters_.max_path_solves
-                 << " (key 'Exact contact solver/max path solves'), "
-                 << failures << " failed (at most "
-                 << parameters_.max_path_failures
-                 << " may: key 'Exact contact solver/max path failures'), "
-                    "each from the statuses of the last converged one: ";
+                 << " (key 'Exact contact solver/max path solves'), ";
+            if (halving)
+              said << failures << " failed (at most "
+                   << parameters_.max_path_failures
+                   << " may: key 'Exact contact solver/max path failures'), ";
+            said << "each from the statuses of the last converged one: ";
             if (reached > 0)
               said << "the last converged at " << reached << " times them.)";
             else
