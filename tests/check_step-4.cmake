@@ -59,6 +59,12 @@ endforeach()
 if(NOT EXISTS "${WORKDIR}/${OUTPUT}/membership.png")
   message(FATAL_ERROR "no membership.png (is gnuplot installed?)")
 endif()
+# Labels as written: gnuplot's enhanced text would draw the underscore of
+# "F_n" or "footprint.max_pressure" as a subscript.
+file(READ "${WORKDIR}/${OUTPUT}/membership.gp" script)
+if(NOT script MATCHES "set terminal pngcairo noenhanced")
+  message(FATAL_ERROR "membership.gp draws labels with enhanced text")
+endif()
 # Spot checks: 20 of the optimisation's points solved by the full-order
 # model too, every output within the proofs' tolerance of its range there,
 # both times measured.

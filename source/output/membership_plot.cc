@@ -80,9 +80,10 @@ namespace FuzzyContact
 
     const unsigned int columns = panels.size() > 1 ? 2 : 1;
     const unsigned int rows    = (panels.size() + columns - 1) / columns;
+    // (noenhanced: labels as written, "F_n" without a subscript.)
     std::ostringstream script;
     script << "# gnuplot script: gnuplot " << basename << ".gp\n"
-           << "set terminal pngcairo size " << 640 * columns << ","
+           << "set terminal pngcairo noenhanced size " << 640 * columns << ","
            << 480 * rows + 40 << " font \",11\"\n"
            << "set output " << quoted(basename + ".png") << "\n"
            << "set multiplot layout " << rows << "," << columns << " title "
