@@ -26,7 +26,9 @@ fuzzycontact_program_test(step-3.zero_load step-3 overlap
   -DJSON_CHECKS=${CMAKE_CURRENT_SOURCE_DIR}/check_step-3_zero_load.cmake)
 
 # Two contact pairs with the scene's own friction (lower: 0, upper: 0.5)
-# and per-pair outputs chosen in the .prm.
+# and per-pair outputs chosen in the .prm. The case line gives each force
+# (the scene's two, scaled to the step file's load = 50000 N) and their
+# resultant, which must be that load, downwards.
 fuzzycontact_program_test(step-3.three_beams step-3 three-beams
   -DEXPECT=success
   ${step3_coarse}
@@ -42,6 +44,7 @@ fuzzycontact_program_test(step-3.three_beams step-3 three-beams
   -DEDIT5_FILE=step
   "-DEDIT5_FROM=set outputs                 = slave.ux, slave.uy, master1.ux, master1.uy, master2.ux, master2.uy, Fn, Ft"
   "-DEDIT5_TO=set outputs = lower.Fn, lower.Ft, upper.Fn, upper.Ft, upper.max_pressure, upper.contact_length, P3.node(0.1, 0.016).uy"
+  "-DMESSAGE=Case three-beams \\(plane stress\\), P1.tip 35714.3 N along \\(0, -1\\), P3.press 14285.7 N along \\(0, -1\\). resultant force \\(0, -50000\\) N, mu = lower 0, upper 0.5"
   -DJSON_CHECKS=${CMAKE_CURRENT_SOURCE_DIR}/check_step-3_three_beams.cmake)
 
 # Each case edits one line of prm/step-3.prm (step) or prm/overlap.prm

@@ -118,12 +118,55 @@ namespace FuzzyContact
     if (s.gravity.norm() > 0)
       text << (text.str().empty() ? "" : ", ") << "gravity (" << s.gravity[0]
            << ", " << s.gravity[1] << ") m/s^2 (the bodies' weight)";
-    if (text.str().empty() || load != 0)
+    // The forces, each with its direction, and their resultant (the
+    // pressures' resultants follow their faces' shapes: named apart).
+    std::vector<std::string> forces, pressures;
+    Tensor<1, 2>             resultant;
+    for (unsigned int c = 0; c < s.components.size(); ++c)
+      for (unsigned int l = 0; l < s.components[c].loads.size(); ++l)
+        {
+          const EdgeLoad &edge_load = s.components[c].loads[l];
+          if (edge_load.is_displacement || edge_load.is_weight)
+            continue;
+          const double       f = state.load_forces[c][l];
+          std::ostringstream one;
+          one << s.components[c].name << "." << edge_load.name << " " << f;
+          if (edge_load.is_pressure)
+            pressures.push_back(one.str() + " Pa normal pressure");
+          else
+            {
+              one << " N along (" << edge_load.direction[0] << ", "
+                  << edge_load.direction[1] << ")";
+              forces.push_back(one.str());
+              resultant += f * edge_load.direction;
+            }
+        }
+    if (forces.size() + pressures.size() > 1)
+      {
+        for (const std::string &f : forces)
+          text << (text.str().empty() ? "" : ", ") << f;
+        for (const std::string &f : pressures)
+          text << (text.str().empty() ? "" : ", ") << f;
+        if (forces.size() > 1)
+          {
+            // (A component below round-off of the other is zero.)
+            const double size = resultant.norm();
+            for (unsigned int d = 0; d < 2; ++d)
+              if (std::abs(resultant[d]) <= 1e-12 * size)
+                resultant[d] = 0;
+            text << "; resultant force (" << resultant[0] << ", "
+                 << resultant[1] << ") N";
+          }
+      }
+    else if (forces.size() == 1)
+      text << (text.str().empty() ? "" : ", ") << "F = " << load << " N "
+           << forces[0].substr(forces[0].find(" N along") + 3);
+    else if (text.str().empty() || load != 0)
       text << (text.str().empty() ? "" : ", ") << "F = " << load << " N";
     // A load history replaces the proportional load steps.
     if (!s.load_stages.empty())
       {
-        text << " in stages";
+        text << ", in load stages";
         for (const LoadStage &stage : s.load_stages)
           text << (&stage == &s.load_stages.front() ? " " : ", ") << stage.name
                << " (" << stage.n_load_steps << " step"

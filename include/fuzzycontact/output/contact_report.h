@@ -66,7 +66,11 @@ namespace FuzzyContact
     std::string scene;
     PlaneModel  plane_model;
     double      load;
-    /** "F = 50000 N", or the prescribed displacements (and F if any). */
+    /**
+     * "F = 50000 N along (0, -1)"; with several loads each force with its
+     * direction and their resultant vector, each pressure; or the
+     * prescribed displacements and the weight (and the forces if any).
+     */
     std::string loading;
     /** The friction coefficient of every contact pair, and the pairs. */
     std::vector<double>                 mu;
