@@ -186,6 +186,13 @@ TEST(Observations, NodesAndAliasesReadTheDisplacementFields)
   EXPECT_NEAR(outputs[2].position[0], 0.2, 1e-14);
   EXPECT_NEAR(outputs[2].position[1], 1e-8, 1e-20);
   EXPECT_EQ(outputs[0].unit(), "m");
+  // Reports give a node to the mesh's precision (1e-9 of its body's size,
+  // at most 10 digits): a coordinate at round-off of zero is 0.
+  EXPECT_EQ(outputs[0].description(), "u_y of P1's node (0.2, 0.00800001)");
+  EXPECT_EQ(outputs[1].description(), "u_x of P2's node (0.1013333333, 0)");
+  Observation on_axis = outputs[1];
+  on_axis.position    = Point<2>(2.45812e-14, 0.12);
+  EXPECT_EQ(on_axis.description(), "u_x of P2's node (0, 0.12)");
 
   FullOrderModel full(bodies, outputs.dofs());
   full.set_state(SceneState(bodies.scene()));

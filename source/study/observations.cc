@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <regex>
 #include <sstream>
@@ -23,11 +24,21 @@ namespace FuzzyContact
     const std::regex node_pattern(
       R"(^([A-Za-z0-9_-]+)\.node\(\s*([^,()]+?)\s*,\s*([^,()]+?)\s*\)\.(ux|uy)$)");
 
+    // The point to 1e-9 of @p size (a body's size: the mesh's precision),
+    // in at most 10 significant digits.
     std::string
-    point_string(const Point<2> &p)
+    point_string(const Point<2> &p, const double size)
     {
+      const double unit =
+        size > 0 ? std::pow(10., std::floor(std::log10(size)) - 9) : 0.;
       std::ostringstream s;
-      s << "(" << p[0] << ", " << p[1] << ")";
+      s << std::setprecision(10) << "(";
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          const double x = unit > 0 ? std::round(p[d] / unit) * unit : p[d];
+          s << (d > 0 ? ", " : "") << (x == 0 ? 0. : x);
+        }
+      s << ")";
       return s.str();
     }
 
@@ -161,7 +172,7 @@ namespace FuzzyContact
           if (name.rfind("master", 0) == 0)
             return u + " of master node " + name.substr(6, 1);
           return u + " of " + name.substr(0, name.find('.')) + "'s node " +
-                 point_string(position);
+                 point_string(position, body_size);
         case Kind::normal_force:
           return (pair < 0 ? "total normal force F_n"
                            : "normal force F_n" + of_pair);
@@ -232,16 +243,17 @@ namespace FuzzyContact
           continue;
         const ComponentDescription &c =
           scene.components[scene.component_index(p.component)];
-        const double tolerance = 1e-8 * c.lower_left.distance(c.upper_right);
+        const double size      = c.lower_left.distance(c.upper_right);
+        const double tolerance = 1e-8 * size;
         AssertThrow(p.point[0] >= c.lower_left[0] - tolerance &&
                       p.point[0] <= c.upper_right[0] + tolerance &&
                       p.point[1] >= c.lower_left[1] - tolerance &&
                       p.point[1] <= c.upper_right[1] + tolerance,
                     ExcMessage(what + ": <" + name + ">: the point " +
-                               point_string(p.point) +
+                               point_string(p.point, size) +
                                " lies outside component " + c.name + " " +
-                               point_string(c.lower_left) + " - " +
-                               point_string(c.upper_right) + "."));
+                               point_string(c.lower_left, size) + " - " +
+                               point_string(c.upper_right, size) + "."));
       }
   }
 
@@ -331,6 +343,19 @@ namespace FuzzyContact
           }
         else
           positions.push_back(0);
+        if (p.kind == Observation::Kind::displacement)
+          {
+            const std::vector<Point<2>> &points =
+              bodies.component(o.component).support_points();
+            Point<2> low = points.front(), high = points.front();
+            for (const Point<2> &x : points)
+              for (unsigned int d = 0; d < 2; ++d)
+                {
+                  low[d]  = std::min(low[d], x[d]);
+                  high[d] = std::max(high[d], x[d]);
+                }
+            o.body_size = low.distance(high);
+          }
         observations.push_back(o);
       }
   }

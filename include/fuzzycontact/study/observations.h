@@ -63,6 +63,10 @@ namespace FuzzyContact
     unsigned int            direction = 0;
     types::global_dof_index dof       = 0;
     Point<2>                position;
+    /** The size of the node's body (its nodes' bounding box diagonal):
+     * description() gives the position to 1e-9 of it, the mesh's
+     * precision (0, not 2.4e-14, for a node on an axis). */
+    double body_size = 0;
 
     /** "m", "N" or "Pa". */
     std::string
