@@ -11,9 +11,11 @@
 #include <fuzzycontact/contact/fl2c.h>
 #include <fuzzycontact/contact/full_order_contact.h>
 #include <fuzzycontact/fe/component.h>
+#include <fuzzycontact/fe/stress_state.h>
 #include <fuzzycontact/fuzzy/fuzzy_parameters.h>
 #include <fuzzycontact/fuzzy/vertex_method.h>
 #include <fuzzycontact/output/report.h>
+#include <fuzzycontact/output/stress_postprocessor.h>
 #include <fuzzycontact/scene/scene.h>
 #include <fuzzycontact/scene/scene_quantity.h>
 #include <fuzzycontact/scene/scene_state.h>
@@ -1381,6 +1383,79 @@ TEST(Gravity, ClampedColumnReactionAndShortening)
   const double condensed =
     floating.free_motions()[0] * floating.reference_load_vector(0);
   EXPECT_GT(std::abs(condensed + weight), 1e-6 * weight);
+}
+
+// The stresses the VTU files carry (StressPostprocessor), against closed
+// forms. A bar in plane stress stretched uniaxially by hand (eps_xx = e,
+// eps_yy = -nu e): sigma_xx = E e and nothing else. The column of
+// prm/column.prm clamped at its base, its sides on rollers, under its own
+// weight (plane strain): uniaxial strain, sigma_yy = -rho g (y_top - y),
+// sigma_xx = sigma_zz = nu / (1 - nu) sigma_yy, sigma_xy = 0, von Mises
+// |sigma_yy| (1 - 2 nu) / (1 - nu), pressure -sigma_yy (1 + nu) / (3 (1 -
+// nu)); Q2 represents the linear stress exactly, so every Gauss point of
+// every cell within round-off.
+TEST(Stresses, TheVtuStressesOfAUniaxialColumnAreExact)
+{
+  const double E = 210e9, nu = 0.3, e = 1e-4;
+  Tensor<2, 2> stretch;
+  stretch[0][0]       = e;
+  stretch[1][1]       = -nu * e;
+  const StressState s = stress_state(stretch, PlaneModel::plane_stress, E, nu);
+  EXPECT_NEAR(s.xx, E * e, 1e-12 * E * e);
+  EXPECT_NEAR(s.yy, 0., 1e-12 * E * e);
+  EXPECT_EQ(s.zz, 0.);
+  EXPECT_NEAR(s.von_mises(), E * e, 1e-12 * E * e);
+  EXPECT_NEAR(s.principal()[0], E * e, 1e-12 * E * e);
+  EXPECT_NEAR(s.principal()[1], 0., 1e-12 * E * e);
+  EXPECT_NEAR(s.pressure(), -E * e / 3, 1e-12 * E * e);
+
+  const Scene          scene_ = scene("column");
+  ComponentDescription d      = scene_.components[0];
+  d.clamped_faces             = {"bottom"};
+  Component      column(d, scene_.plane_model);
+  SparseCholesky K;
+  K.factorize(column.stiffness_matrix(), {}, "the clamped column");
+  Vector<double> u = column.load_vector();
+  K.solve(u);
+  const double rho = 7900, g = 9.81, top = 1.2;
+
+  const StressPostprocessor          post(column, {E});
+  const QGauss<2>                    quadrature(3);
+  FEValues<2>                        values(column.mapping(),
+                     column.fe(),
+                     quadrature,
+                     update_gradients | update_quadrature_points);
+  DataPostprocessorInputs::Vector<2> inputs;
+  inputs.solution_gradients.assign(quadrature.size(),
+                                   std::vector<Tensor<1, 2>>(2));
+  std::vector<Vector<double>> computed(quadrature.size(), Vector<double>(8));
+  ASSERT_EQ(post.get_names().size(), 8u);
+  EXPECT_EQ(post.get_names()[4], "von_mises");
+  double worst = 0;
+  for (const auto &cell : column.dof_handler().active_cell_iterators())
+    {
+      values.reinit(cell);
+      values.get_function_gradients(u, inputs.solution_gradients);
+      inputs.template set_cell<2>(cell);
+      post.evaluate_vector_field(inputs, computed);
+      for (const unsigned int q : values.quadrature_point_indices())
+        {
+          const double yy = -rho * g * (top - values.quadrature_point(q)[1]),
+                       xx = nu / (1 - nu) * yy;
+          const std::array<double, 8> exact = {
+            {xx,
+             yy,
+             0.,
+             xx,
+             std::abs(yy) * (1 - 2 * nu) / (1 - nu),
+             xx,
+             yy,
+             -yy * (1 + nu) / (3 * (1 - nu))}};
+          for (unsigned int i = 0; i < 8; ++i)
+            worst = std::max(worst, std::abs(computed[q][i] - exact[i]));
+        }
+    }
+  EXPECT_LT(worst, 1e-8 * rho * g * 1.0) << "largest stress error [Pa]";
 }
 
 // The block of prm/slope.prm under its own weight (prm/slope-weight.prm)

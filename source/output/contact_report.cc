@@ -1,6 +1,7 @@
 #include <fuzzycontact/base/input.h>
 #include <fuzzycontact/output/contact_report.h>
 #include <fuzzycontact/output/report.h>
+#include <fuzzycontact/output/stress_postprocessor.h>
 
 #include <deal.II/numerics/data_out.h>
 
@@ -97,6 +98,7 @@ namespace FuzzyContact
       : scene(bodies.scene().name)
       , plane_model(bodies.scene().plane_model)
       , load(load)
+      , zone_moduli(state.zone_moduli)
       , mu(state.friction_coefficients)
       , pairs(bodies.scene().contact_pairs)
       , n_dofs(bodies.n_dofs())
@@ -482,6 +484,15 @@ namespace FuzzyContact
                 std::vector<std::string>(2, "u_" + run.solution.solver),
                 DataOut<2>::type_dof_data,
                 vector);
+          // The stresses of the first run's field (the reference, full
+          // order), at every point the VTU has, with the case's moduli.
+          const StressPostprocessor stresses(component, c.zone_moduli[i]);
+          for (const SolverRun &run : c.runs)
+            if (run.fields.size() == bodies.n_components())
+              {
+                data_out.add_data_vector(run.fields[i], stresses);
+                break;
+              }
           data_out.add_data_vector(forces[i],
                                    std::vector<std::string>(2, "contact_force"),
                                    DataOut<2>::type_dof_data,
@@ -491,7 +502,7 @@ namespace FuzzyContact
                                                             "contact_shear"},
                                    DataOut<2>::type_dof_data,
                                    scalars);
-          data_out.build_patches(component.fe().degree);
+          data_out.build_patches(component.mapping(), component.fe().degree);
           std::ostringstream vtu;
           data_out.write_vtu(vtu);
           std::ostringstream name;

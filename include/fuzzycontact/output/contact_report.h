@@ -72,6 +72,9 @@ namespace FuzzyContact
      * prescribed displacements and the weight (and the forces if any).
      */
     std::string loading;
+    /** The Young's modulus of every zone: zone_moduli[component][zone]
+     * (the state's: the VTU files' stresses use them). */
+    std::vector<std::vector<double>> zone_moduli;
     /** The friction coefficient of every contact pair, and the pairs. */
     std::vector<double>                 mu;
     std::vector<ContactPairDescription> pairs;
