@@ -6,8 +6,11 @@
 // a = sqrt(4 P R / (pi E*)) and p0 = 2 P / (pi a), with the slave-node
 // spacing at the edge of the contact zone and the time of one cold solve.
 // The pressure profile of the shipped mesh against p0 sqrt(1 - x^2/a^2) goes
-// to hertz-profile.dat and hertz-profile.png (gnuplot) in the current folder;
-// doc/validation.md records the output.
+// to hertz-profile.dat and hertz-profile.png (gnuplot) in the current folder.
+// Then the stress in the block under the middle of the contact: the largest
+// von Mises stress and in-plane shear and their depths, against McEwen's
+// closed form (HertzTheory::subsurface_peaks()). doc/validation.md records
+// the output.
 //
 //   build/hertz_validation [path/to/prm/hertz.prm [finest refinement]]
 
@@ -34,6 +37,7 @@ namespace
     HertzTheory::Cylinder                  theory;
     HertzTheory::ContactZone               zone;
     std::vector<HertzTheory::ProfilePoint> profile;
+    HertzTheory::SubsurfacePeaks           peaks;
   };
 
   Row
@@ -43,7 +47,7 @@ namespace
     Timer          timer;
     FullOrderModel full(bodies, ObservedDofs(bodies.n_components()));
     full.set_state(SceneState(scene));
-    const ContactSolution solution = full.solve();
+    const ContactSolution solution = full.solve_with_fields();
     timer.stop();
 
     const ComponentDescription &roller = scene.components[0];
@@ -72,6 +76,12 @@ namespace
                                        origin,
                                        roller.thickness);
     row.zone    = HertzTheory::contact_zone(row.profile);
+    row.peaks   = HertzTheory::subsurface_peaks(row.theory,
+                                              bodies.component(1),
+                                              solution.displacements[1],
+                                              origin,
+                                              block.zones[0].youngs_modulus,
+                                              block.zones[0].poissons_ratio);
     return row;
   }
 } // namespace
@@ -109,6 +119,27 @@ main(int argc, char **argv)
                 << 100 * (row.zone.nodal_peak_pressure / p0 - 1) << "%"
                 << std::noshowpos << std::setprecision(3) << std::setw(11)
                 << row.time << "\n";
+    }
+
+  // The stress under the middle of the contact, in the block, against
+  // McEwen's closed form for the same P (surface to 3a, every 0.05 a).
+  std::cout << "\nStress in the block under the middle of the contact "
+               "(finite element / closed form, in p0 and a of Hertz):\n"
+            << " refinements  von Mises max     at depth      shear max"
+               "         at depth\n";
+  for (const Row &row : rows)
+    {
+      const double a = row.theory.half_width(), p0 = row.theory.peak_pressure();
+      const HertzTheory::SubsurfacePeaks &q = row.peaks;
+      std::cout << std::setw(12) << row.refinements << std::fixed
+                << std::setprecision(4) << std::setw(9)
+                << q.fe_von_mises.value / p0 << " / " << q.von_mises.value / p0
+                << std::setprecision(2) << std::setw(7)
+                << q.fe_von_mises.depth / a << " / " << q.von_mises.depth / a
+                << std::setprecision(4) << std::setw(9) << q.fe_shear.value / p0
+                << " / " << q.shear.value / p0 << std::setprecision(2)
+                << std::setw(7) << q.fe_shear.depth / a << " / "
+                << q.shear.depth / a << "\n";
     }
 
   const Row    &shipped = rows.front();

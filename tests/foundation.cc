@@ -12,13 +12,17 @@
 #include <fuzzycontact/fe/component.h>
 #include <fuzzycontact/fe/hertz_theory.h>
 #include <fuzzycontact/fe/patch_test.h>
+#include <fuzzycontact/fe/stress_state.h>
 #include <fuzzycontact/modal/modal_solver.h>
 #include <fuzzycontact/output/output_files.h>
+#include <fuzzycontact/output/stress_postprocessor.h>
 #include <fuzzycontact/scene/scene.h>
 #include <fuzzycontact/scene/scene_state.h>
 #include <fuzzycontact/study/contact_scene.h>
 #include <fuzzycontact/study/full_order_model.h>
 
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/lapack_templates.h>
 
@@ -1659,7 +1663,7 @@ namespace
     const auto    &arc = scene.components[0].mesh.arcs.begin()->second;
     FullOrderModel full(bodies, ObservedDofs(2));
     full.set_state(SceneState(scene));
-    const ContactSolution s = full.solve();
+    const ContactSolution s = full.solve_with_fields();
     const auto &roller = scene.components[0], &block = scene.components[1];
     const HertzTheory::Cylinder hertz{
       arc.radius,
@@ -1678,9 +1682,152 @@ namespace
     EXPECT_NEAR(zone.peak_pressure / hertz.peak_pressure(), 1., 0.02);
     // Frictionless: no tangential force; force balance of the nodal forces.
     EXPECT_NEAR(s.tangential_force, 0., 1e-10 * s.normal_force);
+
+    // The stress in the block under the middle of the contact, from the
+    // surface to 3a deep, against McEwen's closed form for the same P: the
+    // largest von Mises stress and in-plane shear, and their depths (the
+    // 61 points 0.05 a apart).
+    const double a = hertz.half_width(), p0 = hertz.peak_pressure();
+    const HertzTheory::SubsurfacePeaks peaks =
+      HertzTheory::subsurface_peaks(hertz,
+                                    bodies.component(1),
+                                    s.displacements[1],
+                                    Point<2>(0, 0),
+                                    block.zones[0].youngs_modulus,
+                                    block.zones[0].poissons_ratio);
+    EXPECT_NEAR(peaks.fe_von_mises.value / peaks.von_mises.value, 1., 0.02);
+    EXPECT_NEAR(peaks.fe_von_mises.depth, peaks.von_mises.depth, 0.1 * a);
+    EXPECT_NEAR(peaks.fe_shear.value / peaks.shear.value, 1., 0.02);
+    EXPECT_NEAR(peaks.fe_shear.depth, peaks.shear.depth, 0.1 * a);
+    std::cout << "Hertz subsurface: von Mises " << peaks.fe_von_mises.value / p0
+              << " p0 at " << peaks.fe_von_mises.depth / a << " a (closed form "
+              << peaks.von_mises.value / p0 << " p0 at "
+              << peaks.von_mises.depth / a << " a), shear "
+              << peaks.fe_shear.value / p0 << " p0 at "
+              << peaks.fe_shear.depth / a << " a (" << peaks.shear.value / p0
+              << " p0 at " << peaks.shear.depth / a << " a)\n";
     return s;
   }
 } // namespace
+
+// Lame's thick cylinder under internal pressure p (plane strain, a quarter
+// of the ring from a Gmsh geometry, its arcs exact, rollers on the two
+// symmetry lines): sigma_rr = A - B / r^2, sigma_tt = A + B / r^2, sigma_zz
+// = 2 nu A, A = p a^2 / (b^2 - a^2), B = p a^2 b^2 / (b^2 - a^2); the VTU
+// files' stresses (StressPostprocessor) and their von Mises stress at every
+// Gauss point within 0.5 % of p (16 x 32 Q2 cells; 0.8 % on 8 x 16).
+TEST(Validation, LameThickCylinderStresses)
+{
+  const fs::path folder = fs::temp_directory_path() /
+                          ("fuzzycontact-lame-" + std::to_string(::getpid()));
+  fs::create_directories(folder);
+  std::ofstream(folder / "ring.geo")
+    << "a = 50; b = 100;\n"
+       "Point(1) = {0, 0, 0}; Point(2) = {a, 0, 0}; Point(3) = {b, 0, 0};\n"
+       "Point(4) = {0, b, 0}; Point(5) = {0, a, 0};\n"
+       "Line(1) = {2, 3}; Circle(2) = {3, 1, 4}; Line(3) = {4, 5};\n"
+       "Circle(4) = {5, 1, 2};\n"
+       "Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};\n"
+       "Transfinite Curve{1, 3} = 17; Transfinite Curve{2, 4} = 33;\n"
+       "Transfinite Surface{1}; Recombine Surface{1};\n"
+       "Physical Curve(\"bottom\") = {1}; Physical Curve(\"outer\") = {2};\n"
+       "Physical Curve(\"left\") = {3}; Physical Curve(\"inner\") = {4};\n"
+       "Physical Surface(\"steel\") = {1};\n";
+  const Scene scene = Scene::read_from_string(
+    "subsection Scene\n  set name = ring\n  set plane model = plane strain\n"
+    "  set components = Ring\nend\n"
+    "subsection Component Ring\n  set mesh file = " +
+      (folder / "ring.geo").string() +
+      "\n  set scale = 1e-3\n  set E = 210e9\n  set nu = 0.3\n"
+      "  set supports = left-roller, bottom-roller\n"
+      "  subsection Support left-roller\n    set face = left\n"
+      "    set fixed components = x\n  end\n"
+      "  subsection Support bottom-roller\n    set face = bottom\n"
+      "    set fixed components = y\n  end\n"
+      "  set loads = bore\n"
+      "  subsection Load bore\n    set face = inner\n    set pressure = 1e8\n"
+      "  end\nend\n",
+    "ring.prm");
+  fs::remove_all(folder);
+  const double   E = 210e9, nu = 0.3, p = 1e8, a = 0.05, b = 0.1;
+  const double   A = p * a * a / (b * b - a * a), B = A * b * b;
+  Component      ring(scene.components[0], scene.plane_model);
+  SparseCholesky K;
+  K.factorize(ring.stiffness_matrix(), {}, "the ring");
+  Vector<double> u = ring.load_vector();
+  K.solve(u);
+
+  const StressPostprocessor          post(ring, {E});
+  const QGauss<2>                    quadrature(3);
+  FEValues<2>                        values(ring.mapping(),
+                     ring.fe(),
+                     quadrature,
+                     update_gradients | update_quadrature_points);
+  DataPostprocessorInputs::Vector<2> inputs;
+  inputs.solution_gradients.assign(quadrature.size(),
+                                   std::vector<Tensor<1, 2>>(2));
+  std::vector<Vector<double>> computed(quadrature.size(), Vector<double>(8));
+  double                      worst = 0, worst_mises = 0;
+  for (const auto &cell : ring.dof_handler().active_cell_iterators())
+    {
+      values.reinit(cell);
+      values.get_function_gradients(u, inputs.solution_gradients);
+      inputs.template set_cell<2>(cell);
+      post.evaluate_vector_field(inputs, computed);
+      for (const unsigned int q : values.quadrature_point_indices())
+        {
+          const Point<2> x  = values.quadrature_point(q);
+          const double   r2 = x.square(), c = x[0] * x[0] / r2,
+                       s = x[1] * x[1] / r2, cs = x[0] * x[1] / r2;
+          const double rr = A - B / r2, tt = A + B / r2;
+          // The polar stresses in x, y.
+          const std::array<double, 4> exact = {
+            {rr * c + tt * s, rr * s + tt * c, (rr - tt) * cs, 2 * nu * A}};
+          for (unsigned int i = 0; i < 4; ++i)
+            worst = std::max(worst, std::abs(computed[q][i] - exact[i]));
+          const double vm = std::sqrt(((rr - tt) * (rr - tt) +
+                                       (tt - 2 * nu * A) * (tt - 2 * nu * A) +
+                                       (2 * nu * A - rr) * (2 * nu * A - rr)) /
+                                      2);
+          worst_mises = std::max(worst_mises, std::abs(computed[q][4] - vm));
+        }
+    }
+  std::cout << "Lame: largest stress error " << worst / p << " p, von Mises "
+            << worst_mises / p << " p\n";
+  EXPECT_LT(worst, 5e-3 * p) << "largest stress error [Pa]";
+  EXPECT_LT(worst_mises, 5e-3 * p) << "largest von Mises error [Pa]";
+}
+
+// McEwen's closed form under the middle of a Hertz line contact against
+// the published figures (Johnson, Contact Mechanics, 4.3): the largest
+// in-plane shear 0.300 p0 at 0.786 a for any nu; the largest von Mises
+// stress 0.5575 p0 at 0.70 a for nu = 0.3 (plane strain).
+TEST(Validation, HertzSubsurfaceStressIsThePublishedOne)
+{
+  const HertzTheory::Cylinder hertz{0.05, 58.6e9, 1.94e6};
+  const double a = hertz.half_width(), p0 = hertz.peak_pressure();
+  for (const double nu : {0.3, 0.45})
+    {
+      HertzTheory::Peak mises, shear;
+      for (unsigned int k = 0; k <= 3000; ++k)
+        {
+          const double      z = 3 * a * k / 3000;
+          const StressState s = hertz.stress_under_middle(z, nu);
+          if (s.von_mises() > mises.value)
+            mises = {s.von_mises(), z};
+          const double t = (s.principal()[0] - s.principal()[1]) / 2;
+          if (t > shear.value)
+            shear = {t, z};
+        }
+      EXPECT_NEAR(shear.value / p0, 0.300, 5e-4) << "nu = " << nu;
+      EXPECT_NEAR(shear.depth / a, 0.786, 1e-3) << "nu = " << nu;
+      if (nu == 0.3)
+        {
+          EXPECT_NEAR(mises.value / p0, 0.5575, 5e-4);
+          EXPECT_NEAR(mises.depth / a, 0.70, 0.01);
+        }
+    }
+}
 
 TEST(Validation, HertzRollerOnBlock)
 {

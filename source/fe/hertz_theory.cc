@@ -2,6 +2,7 @@
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/numbers.h>
+#include <deal.II/numerics/vector_tools.h>
 
 #include <algorithm>
 #include <cmath>
@@ -41,6 +42,61 @@ namespace FuzzyContact
       const double a = half_width();
       return std::abs(x) < a ? peak_pressure() * std::sqrt(1 - x * x / (a * a))
                              : 0.;
+    }
+
+
+    StressState
+    Cylinder::stress_under_middle(const double z, const double nu) const
+    {
+      const double a = half_width(), p0 = peak_pressure(),
+                   r = std::sqrt(a * a + z * z);
+      StressState s;
+      s.xx = -p0 * ((a * a + 2 * z * z) / r - 2 * z) / a;
+      s.yy = -p0 * a / r;
+      s.xy = 0;
+      s.zz = nu * (s.xx + s.yy);
+      return s;
+    }
+
+
+    SubsurfacePeaks
+    subsurface_peaks(const Cylinder       &hertz,
+                     const Component      &body,
+                     const Vector<double> &u,
+                     const Point<2>       &origin,
+                     const double          E,
+                     const double          nu,
+                     const unsigned int    n)
+    {
+      const auto take = [](Peak &peak, const double value, const double z) {
+        if (value > peak.value)
+          peak = {value, z};
+      };
+      const auto shear = [](const StressState &s) {
+        return (s.principal()[0] - s.principal()[1]) / 2;
+      };
+      SubsurfacePeaks           peaks;
+      std::vector<Tensor<1, 2>> gradient(2);
+      for (unsigned int k = 0; k <= n; ++k)
+        {
+          const double z = 3 * hertz.half_width() * k / n;
+          VectorTools::point_gradient(body.mapping(),
+                                      body.dof_handler(),
+                                      u,
+                                      Point<2>(origin[0], origin[1] - z),
+                                      gradient);
+          Tensor<2, 2> grad_u;
+          grad_u[0] = gradient[0];
+          grad_u[1] = gradient[1];
+          const StressState fe =
+            stress_state(grad_u, body.plane_model(), E, nu);
+          const StressState form = hertz.stress_under_middle(z, nu);
+          take(peaks.fe_von_mises, fe.von_mises(), z);
+          take(peaks.fe_shear, shear(fe), z);
+          take(peaks.von_mises, form.von_mises(), z);
+          take(peaks.shear, shear(form), z);
+        }
+      return peaks;
     }
 
 

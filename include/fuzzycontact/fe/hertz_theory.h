@@ -17,6 +17,8 @@
 
 #include <fuzzycontact/contact/contact_interface.h>
 #include <fuzzycontact/contact/contact_problem.h>
+#include <fuzzycontact/fe/component.h>
+#include <fuzzycontact/fe/stress_state.h>
 
 #include <vector>
 
@@ -45,7 +47,50 @@ namespace FuzzyContact
       /** p0 sqrt(1 - x^2 / a^2) inside the contact, 0 outside. */
       double
       pressure(const double x) const;
+      /**
+       * The stress in the body at depth @p z under the middle of the
+       * contact (McEwen's closed form for the half-plane under Hertz's
+       * pressure, plane strain, Poisson's ratio @p nu): along the surface
+       * xx = -p0 ((a^2 + 2 z^2) / sqrt(a^2 + z^2) - 2 z) / a, along the
+       * depth yy = -p0 a / sqrt(a^2 + z^2), xy = 0, zz = nu (xx + yy).
+       * The in-plane components do not depend on nu: the largest shear
+       * (xx - yy) / 2 is 0.300 p0 at z = 0.786 a; von Mises (with zz) is
+       * largest at 0.5575 p0, z = 0.70 a, for nu = 0.3.
+       */
+      StressState
+      stress_under_middle(const double z, const double nu) const;
     };
+
+    /** The largest value of a stress measure along a line, and where. */
+    struct Peak
+    {
+      double value = 0, depth = 0;
+    };
+
+    /** The largest von Mises stress and in-plane shear ((s1 - s2) / 2)
+     * under the middle of the contact: of the finite element field and of
+     * the closed form (Cylinder::stress_under_middle()). */
+    struct SubsurfacePeaks
+    {
+      Peak fe_von_mises, fe_shear, von_mises, shear;
+    };
+
+    /**
+     * The peaks from the surface point @p origin of @p body (the middle of
+     * the contact) to 3a deep along its inward normal -y, sampled at @p n
+     * + 1 points: the finite element stress of displacement @p u (its
+     * gradient at each point, on the body's mapping) with modulus @p E and
+     * Poisson's ratio @p nu, beside @p hertz's closed form for the same
+     * depths.
+     */
+    SubsurfacePeaks
+    subsurface_peaks(const Cylinder       &hertz,
+                     const Component      &body,
+                     const Vector<double> &u,
+                     const Point<2>       &origin,
+                     const double          E,
+                     const double          nu,
+                     const unsigned int    n = 60);
 
     /** One slave node of the profile. */
     struct ProfilePoint
