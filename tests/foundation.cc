@@ -15,19 +15,17 @@
 #include <fuzzycontact/fe/stress_state.h>
 #include <fuzzycontact/modal/modal_solver.h>
 #include <fuzzycontact/output/output_files.h>
-#include <fuzzycontact/output/stress_postprocessor.h>
 #include <fuzzycontact/scene/scene.h>
 #include <fuzzycontact/scene/scene_state.h>
 #include <fuzzycontact/study/contact_scene.h>
 #include <fuzzycontact/study/full_order_model.h>
 
-#include <deal.II/base/quadrature_lib.h>
-#include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/lapack_templates.h>
 
 #include <gtest/gtest.h>
 
+#include "gauss_point_stresses.h"
 #include "test_utilities.h"
 #include <algorithm>
 #include <cmath>
@@ -1757,41 +1755,26 @@ TEST(Validation, LameThickCylinderStresses)
   Vector<double> u = ring.load_vector();
   K.solve(u);
 
-  const StressPostprocessor          post(ring, {E});
-  const QGauss<2>                    quadrature(3);
-  FEValues<2>                        values(ring.mapping(),
-                     ring.fe(),
-                     quadrature,
-                     update_gradients | update_quadrature_points);
-  DataPostprocessorInputs::Vector<2> inputs;
-  inputs.solution_gradients.assign(quadrature.size(),
-                                   std::vector<Tensor<1, 2>>(2));
-  std::vector<Vector<double>> computed(quadrature.size(), Vector<double>(8));
-  double                      worst = 0, worst_mises = 0;
-  for (const auto &cell : ring.dof_handler().active_cell_iterators())
-    {
-      values.reinit(cell);
-      values.get_function_gradients(u, inputs.solution_gradients);
-      inputs.template set_cell<2>(cell);
-      post.evaluate_vector_field(inputs, computed);
-      for (const unsigned int q : values.quadrature_point_indices())
-        {
-          const Point<2> x  = values.quadrature_point(q);
-          const double   r2 = x.square(), c = x[0] * x[0] / r2,
-                       s = x[1] * x[1] / r2, cs = x[0] * x[1] / r2;
-          const double rr = A - B / r2, tt = A + B / r2;
-          // The polar stresses in x, y.
-          const std::array<double, 4> exact = {
-            {rr * c + tt * s, rr * s + tt * c, (rr - tt) * cs, 2 * nu * A}};
-          for (unsigned int i = 0; i < 4; ++i)
-            worst = std::max(worst, std::abs(computed[q][i] - exact[i]));
-          const double vm = std::sqrt(((rr - tt) * (rr - tt) +
-                                       (tt - 2 * nu * A) * (tt - 2 * nu * A) +
-                                       (2 * nu * A - rr) * (2 * nu * A - rr)) /
-                                      2);
-          worst_mises = std::max(worst_mises, std::abs(computed[q][4] - vm));
-        }
-    }
+  double worst = 0, worst_mises = 0;
+  for_each_gauss_point_stress(
+    ring,
+    u,
+    {E},
+    [&](const Point<2> &x, const Vector<double> &computed) {
+      const double r2 = x.square(), c = x[0] * x[0] / r2, s = x[1] * x[1] / r2,
+                   cs = x[0] * x[1] / r2;
+      const double rr = A - B / r2, tt = A + B / r2, zz = 2 * nu * A;
+      // The polar stresses in x, y.
+      const std::array<double, 4> exact = {
+        {rr * c + tt * s, rr * s + tt * c, (rr - tt) * cs, zz}};
+      for (unsigned int i = 0; i < 4; ++i)
+        worst = std::max(worst, std::abs(computed[i] - exact[i]));
+      const double vm =
+        std::sqrt(((rr - tt) * (rr - tt) + (tt - zz) * (tt - zz) +
+                   (zz - rr) * (zz - rr)) /
+                  2);
+      worst_mises = std::max(worst_mises, std::abs(computed[4] - vm));
+    });
   std::cout << "Lame: largest stress error " << worst / p << " p, von Mises "
             << worst_mises / p << " p\n";
   EXPECT_LT(worst, 5e-3 * p) << "largest stress error [Pa]";
