@@ -67,6 +67,7 @@ namespace
                                           block.zones[0].poissons_ratio),
                      solution.normal_force / roller.thickness},
             {},
+            {},
             {}};
     // The first contact is the arc's lowest point.
     const Point<2> origin(arc.centre[0], arc.centre[1] - arc.radius);

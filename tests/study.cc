@@ -14,6 +14,7 @@
 #include <fuzzycontact/fe/stress_state.h>
 #include <fuzzycontact/fuzzy/fuzzy_parameters.h>
 #include <fuzzycontact/fuzzy/vertex_method.h>
+#include <fuzzycontact/output/contact_face_plot.h>
 #include <fuzzycontact/output/report.h>
 #include <fuzzycontact/output/stress_postprocessor.h>
 #include <fuzzycontact/scene/scene.h>
@@ -1384,6 +1385,58 @@ TEST(Gravity, ClampedColumnReactionAndShortening)
   const double condensed =
     floating.free_motions()[0] * floating.reference_load_vector(0);
   EXPECT_GT(std::abs(condensed + weight), 1e-6 * weight);
+}
+
+// step-3's plot of the contact pressure and shear along each face: its
+// data, per pair and solver, the slave nodes in order along the pair's
+// tangent; pressure and shear times tributary area add up to the pair's
+// F_n and F_t (Observations' <pair>.Fn, .Ft), on three-beams' two pairs.
+TEST(ContactFacePlot, ItsPressuresAddUpToEachPairsForces)
+{
+  ContactScene       bodies(scene("three-beams"), 0);
+  const Observations outputs({"lower.Fn", "lower.Ft", "upper.Fn", "upper.Ft"},
+                             bodies);
+  FullOrderModel     full(bodies, outputs.dofs());
+  const SceneState   state(bodies.scene());
+  full.set_state(state);
+  ContactCase c(bodies, state, state.total_force(bodies.scene()));
+  SolverRun   run;
+  run.solution = full.solve();
+  c.runs.push_back(run);
+  const std::vector<double> forces = outputs.values(run.solution);
+  ASSERT_GT(std::abs(forces[3]), 1e-3 * forces[2]); // upper: friction
+
+  std::istringstream                 data(contact_face_data(c, bodies));
+  std::string                        line;
+  std::vector<std::array<double, 2>> sums;
+  std::vector<double>                last;
+  while (std::getline(data, line))
+    {
+      if (line.rfind("# lower", 0) == 0 || line.rfind("# upper", 0) == 0)
+        {
+          sums.push_back({{0., 0.}});
+          last.clear();
+          continue;
+        }
+      if (line.empty() || line[0] == '#')
+        continue;
+      std::istringstream row(line);
+      double             s, length, pressure, shear;
+      row >> s >> length >> pressure >> shear;
+      ASSERT_FALSE(sums.empty());
+      if (!last.empty())
+        EXPECT_GE(s, last.back()) << "nodes out of order along the tangent";
+      last.push_back(s);
+      const double area = length * bodies.scene().components[0].thickness;
+      sums.back()[0] += pressure * area;
+      sums.back()[1] += shear * area;
+    }
+  ASSERT_EQ(sums.size(), 2u);
+  for (unsigned int pair = 0; pair < 2; ++pair)
+    for (unsigned int i = 0; i < 2; ++i)
+      EXPECT_NEAR(sums[pair][i],
+                  forces[2 * pair + i],
+                  1e-8 * forces[2 * pair]); // (the file's 10 digits)
 }
 
 // The stresses the VTU files carry (StressPostprocessor), against closed

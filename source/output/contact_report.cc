@@ -208,6 +208,16 @@ namespace FuzzyContact
 
 
   std::string
+  ContactCase::file_stem(const std::string &label) const
+  {
+    std::string mu = friction_label();
+    std::replace(mu.begin(), mu.end(), ' ', '_');
+    mu.erase(std::remove(mu.begin(), mu.end(), ','), mu.end());
+    return "contact-" + label + "-mu" + mu;
+  }
+
+
+  std::string
   ContactCase::friction_label() const
   {
     std::ostringstream s;
@@ -505,13 +515,8 @@ namespace FuzzyContact
           data_out.build_patches(component.mapping(), component.fe().degree);
           std::ostringstream vtu;
           data_out.write_vtu(vtu);
-          std::ostringstream name;
-          std::string        mu = c.friction_label();
-          std::replace(mu.begin(), mu.end(), ' ', '_');
-          mu.erase(std::remove(mu.begin(), mu.end(), ','), mu.end());
-          name << "contact-" << label << "-mu" << mu << "-" << component.name()
-               << ".vtu";
-          output.add(name.str(), vtu.str());
+          output.add(c.file_stem(label) + "-" + component.name() + ".vtu",
+                     vtu.str());
         }
     }
 

@@ -16,8 +16,8 @@
 // master nodes around it, and the total normal and tangential contact
 // forces), their errors against full_order, iterations and times. It then
 // sets the `overlap` case in plane strain beside the paper's Table 3, and
-// writes report.txt, results.json and VTU files of the deformed bodies with
-// the contact pressure.
+// writes report.txt, results.json, VTU files (displacements, stresses, contact
+// pressure) and a plot of the pressure and shear along each contact face.
 //
 // Every solver is set from the same SceneState (the scene with the load and
 // friction coefficient of the case), so they all solve the same problem.
@@ -29,6 +29,7 @@
 #include <fuzzycontact/contact/active_set_solver.h>
 #include <fuzzycontact/contact/fl2c.h>
 #include <fuzzycontact/fe/beam_contact.h>
+#include <fuzzycontact/output/contact_face_plot.h>
 #include <fuzzycontact/output/contact_report.h>
 #include <fuzzycontact/output/report.h>
 #include <fuzzycontact/study/full_order_model.h>
@@ -380,8 +381,11 @@ namespace Step3
             theory->compare(c.load,
                             c.runs[0].solution.normal_force,
                             c.runs[0].outputs[outputs.index("slave.uy")]);
+        std::string plot_message;
         if (parameters.write_vtu)
           ContactReport::add_vtu(output, c, bodies, label);
+        if (!add_contact_face_plot(output, c, bodies, label, plot_message))
+          report.say("warning: " + plot_message + "\n");
         report.say(ContactReport::case_table(c, outputs, n_shown));
         cases.push_back(std::move(c));
       }

@@ -99,6 +99,10 @@ namespace FuzzyContact
     /** "0.3" if every pair has it, else "lower 0, upper 0.5". */
     std::string
     friction_label() const;
+    /** The start of the case's file names: "contact-<label>-mu<mu>"
+     * (spaces as underscores, no commas). */
+    std::string
+    file_stem(const std::string &label) const;
   };
 
   namespace ContactReport
