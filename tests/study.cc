@@ -233,6 +233,18 @@ TEST(Observations, PairOutputsAgreeWithHandValues)
     EXPECT_NEAR(v[2], h / 6, 1e-15);
     EXPECT_NEAR(v[1], v[0] / (h / 6 * 1.), 1e-9 * v[1]);
     EXPECT_EQ(v[0], s.normal_force);
+
+    // With friction the same corner carries F_t: its shear traction is
+    // |F_t| / (h/6 t).
+    const Observations sheared({"interface.Ft", "interface.max_shear"}, bodies);
+    state.friction_coefficients = {0.3};
+    full.set_state(state);
+    const ContactSolution f = full.solve();
+    ASSERT_EQ(f.n_nodes() - f.count(ContactStatus::open), 1u);
+    const std::vector<double> w = sheared.values(f);
+    EXPECT_GT(std::abs(w[0]), 1e-3 * f.normal_force);
+    EXPECT_NEAR(w[1], std::abs(w[0]) / (h / 6 * 1.), 1e-9 * w[1]);
+    EXPECT_EQ(sheared[1].unit(), "Pa");
   }
   {
     ContactScene       bodies(scene("three-beams"), 0);
@@ -244,6 +256,13 @@ TEST(Observations, PairOutputsAgreeWithHandValues)
     EXPECT_NEAR(v[1] + v[3], v[5], 1e-12 * v[4]);
     EXPECT_GT(v[0], 0.);
     EXPECT_GT(v[2], 0.);
+    // The frictionless lower pair has no shear traction; the upper one has.
+    const Observations shear({"lower.max_shear", "upper.max_shear"}, bodies);
+    FullOrderModel     again(bodies, shear.dofs());
+    again.set_state(SceneState(bodies.scene()));
+    const std::vector<double> t = shear.values(again.solve());
+    EXPECT_EQ(t[0], 0.);
+    EXPECT_GT(t[1], 0.);
   }
 }
 
@@ -1425,7 +1444,9 @@ TEST(ContactFacePlot, ItsPressuresAddUpToEachPairsForces)
       row >> s >> length >> pressure >> shear;
       ASSERT_FALSE(sums.empty());
       if (!last.empty())
-        EXPECT_GE(s, last.back()) << "nodes out of order along the tangent";
+        {
+          EXPECT_GE(s, last.back()) << "nodes out of order along the tangent";
+        }
       last.push_back(s);
       const double area = length * bodies.scene().components[0].thickness;
       sums.back()[0] += pressure * area;

@@ -18,7 +18,7 @@ namespace FuzzyContact
     const char *const accepted =
       "<component>.node(x, y).ux or .uy, slave.ux, slave.uy, master1.ux, "
       "master1.uy, master2.ux, master2.uy, Fn, Ft, <pair>.Fn, <pair>.Ft, "
-      "<pair>.max_pressure or <pair>.contact_length";
+      "<pair>.max_pressure, <pair>.max_shear or <pair>.contact_length";
 
     // <component>.node(x, y).<ux|uy>
     const std::regex node_pattern(
@@ -103,14 +103,14 @@ namespace FuzzyContact
       for (unsigned int k = 0; k < scene.contact_pairs.size(); ++k)
         if (scene.contact_pairs[k].name == head &&
             (tail == "Fn" || tail == "Ft" || tail == "max_pressure" ||
-             tail == "contact_length"))
+             tail == "max_shear" || tail == "contact_length"))
           {
             p.pair = k;
             p.kind = tail == "Fn"   ? Observation::Kind::normal_force
                      : tail == "Ft" ? Observation::Kind::tangential_force
-                     : tail == "max_pressure"
-                       ? Observation::Kind::max_pressure
-                       : Observation::Kind::contact_length;
+                     : tail == "max_pressure" ? Observation::Kind::max_pressure
+                     : tail == "max_shear"    ? Observation::Kind::max_shear
+                                           : Observation::Kind::contact_length;
             return p;
           }
       if ((head == "slave" || head == "master1" || head == "master2") &&
@@ -124,7 +124,7 @@ namespace FuzzyContact
           return p;
         }
       if (tail == "Fn" || tail == "Ft" || tail == "max_pressure" ||
-          tail == "contact_length")
+          tail == "max_shear" || tail == "contact_length")
         AssertThrow(false,
                     ExcMessage(where + ": the scene has no contact pair <" +
                                head + "> (its contact pairs: " +
@@ -152,6 +152,7 @@ namespace FuzzyContact
         case Kind::tangential_force:
           return "N";
         case Kind::max_pressure:
+        case Kind::max_shear:
           return "Pa";
       }
     return "";
@@ -181,6 +182,8 @@ namespace FuzzyContact
                            : "tangential force F_t" + of_pair);
         case Kind::max_pressure:
           return "largest contact pressure" + of_pair;
+        case Kind::max_shear:
+          return "largest contact shear traction" + of_pair;
         case Kind::contact_length:
           return "contact length" + of_pair;
       }
@@ -471,6 +474,11 @@ namespace FuzzyContact
                       break;
                     case Observation::Kind::max_pressure:
                       v = std::max(v, p[normal_row(k)] / pressure_area[k]);
+                      break;
+                    case Observation::Kind::max_shear:
+                      v = std::max(v,
+                                   std::abs(p[tangential_row(k)]) /
+                                     pressure_area[k]);
                       break;
                     case Observation::Kind::contact_length:
                       if (s.status[k] != ContactStatus::open)

@@ -16,6 +16,8 @@
 //   <pair>.max_pressure         largest nodal normal force of the pair over
 //                               its slave node's tributary area (tributary
 //                               length x thickness) [Pa]
+//   <pair>.max_shear            largest |nodal tangential force| of the pair
+//                               over its slave node's tributary area [Pa]
 //   <pair>.contact_length       length of the closed part of the pair's slave
 //                               face: the tributary lengths of its closed
 //                               slave nodes, summed [m]
@@ -50,6 +52,7 @@ namespace FuzzyContact
       normal_force,
       tangential_force,
       max_pressure,
+      max_shear,
       contact_length
     };
 
