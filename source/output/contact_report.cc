@@ -163,6 +163,8 @@ namespace FuzzyContact
     else if (forces.size() == 1)
       text << (text.str().empty() ? "" : ", ") << "F = " << load << " N "
            << forces[0].substr(forces[0].find(" N along") + 3);
+    else if (pressures.size() == 1)
+      text << (text.str().empty() ? "" : ", ") << pressures[0];
     else if (text.str().empty() || load != 0)
       text << (text.str().empty() ? "" : ", ") << "F = " << load << " N";
     // A load history replaces the proportional load steps.
@@ -494,15 +496,13 @@ namespace FuzzyContact
                 std::vector<std::string>(2, "u_" + run.solution.solver),
                 DataOut<2>::type_dof_data,
                 vector);
-          // The stresses of the first run's field (the reference, full
-          // order), at every point the VTU has, with the case's moduli.
+          // The stresses of the reference's field (the full order, the
+          // first run; none if it failed), at every point the VTU has,
+          // with the case's moduli.
           const StressPostprocessor stresses(component, c.zone_moduli[i]);
-          for (const SolverRun &run : c.runs)
-            if (run.fields.size() == bodies.n_components())
-              {
-                data_out.add_data_vector(run.fields[i], stresses);
-                break;
-              }
+          if (!c.runs.empty() &&
+              c.runs[0].fields.size() == bodies.n_components())
+            data_out.add_data_vector(c.runs[0].fields[i], stresses);
           data_out.add_data_vector(forces[i],
                                    std::vector<std::string>(2, "contact_force"),
                                    DataOut<2>::type_dof_data,
