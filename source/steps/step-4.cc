@@ -99,13 +99,12 @@ namespace Step4
                         Patterns::Anything(),
                         "Folder for report.txt, results.json and the "
                         "membership plot.");
-      prm.declare_entry(
-        "outputs",
-        Observations::default_outputs(),
-        Patterns::Anything(),
-        "Comma-separated outputs to bound: "
-        "<component>.node(x, y).ux/.uy, slave.ux/.uy, Fn, Ft, "
-        "<pair>.Fn/.Ft/.max_pressure/.max_shear/.contact_length.");
+      prm.declare_entry("outputs",
+                        Observations::default_outputs(),
+                        Patterns::Anything(),
+                        "Comma-separated outputs to bound (doc/scenes.md): "
+                        "<component>.node(x, y).ux/.uy, slave.ux/.uy, Fn, "
+                        "Ft, <pair>.Fn/.Ft/.max_pressure/.max_shear/...");
       prm.declare_entry("number of alpha levels",
                         "11",
                         Patterns::Integer(),
