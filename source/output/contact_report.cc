@@ -123,6 +123,7 @@ namespace FuzzyContact
     // The forces, each with its direction, and their resultant (the
     // pressures' resultants follow their faces' shapes: named apart).
     std::vector<std::string> forces, pressures;
+    std::string              along; // (of the last force)
     Tensor<1, 2>             resultant;
     for (unsigned int c = 0; c < s.components.size(); ++c)
       for (unsigned int l = 0; l < s.components[c].loads.size(); ++l)
@@ -137,9 +138,11 @@ namespace FuzzyContact
             pressures.push_back(one.str() + " Pa normal pressure");
           else
             {
-              one << " N along (" << edge_load.direction[0] << ", "
-                  << edge_load.direction[1] << ")";
-              forces.push_back(one.str());
+              std::ostringstream direction;
+              direction << "along (" << edge_load.direction[0] << ", "
+                        << edge_load.direction[1] << ")";
+              along = direction.str();
+              forces.push_back(one.str() + " N " + along);
               resultant += f * edge_load.direction;
             }
         }
@@ -162,7 +165,7 @@ namespace FuzzyContact
       }
     else if (forces.size() == 1)
       text << (text.str().empty() ? "" : ", ") << "F = " << load << " N "
-           << forces[0].substr(forces[0].find(" N along") + 3);
+           << along;
     else if (pressures.size() == 1)
       text << (text.str().empty() ? "" : ", ") << pressures[0];
     else if (text.str().empty() || load != 0)
